@@ -1,0 +1,60 @@
+#ifndef xcrack_boundary_conditions_h
+#define xcrack_boundary_conditions_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/fe/component_mask.h>
+#include <deal.II/grid/tria.h>
+
+#include <xcrack/parsed_function.h>
+
+#include <map>
+#include <memory>
+
+namespace xcrack
+{
+  using namespace dealii;
+
+  /**
+   * Loads and supports of the elasticity problem (`subsection Boundary
+   * conditions`): prescribed displacements and tractions per boundary id,
+   * and a body force. Each boundary entry is a list of
+   * `id: expr_x; expr_y[; expr_z]` items separated by `|`, e.g.
+   *
+   *     set Dirichlet = 0: 0; 0 | 1: 0.01*y; 0
+   *     set Dirichlet components = 1: x
+   *     set Neumann = 3: 0; -1
+   *
+   * `Dirichlet components` restricts the prescribed components of a boundary
+   * (letters among x, y, z): a roller is `2: y`. Expressions may use x, y, z,
+   * pi, the material constants E, nu, mu, lambda and the `Function
+   * constants` of the file.
+   */
+  template <int dim>
+  class BoundaryConditions
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Parse the entries into functions; throws InputError naming the entry.
+    void
+    parse_parameters(ParameterHandler &prm, const FunctionConstants &constants);
+
+    /**
+     * Check the boundary ids against those of @p triangulation: every id
+     * named must exist (on some rank), and a component may not be given both
+     * a displacement and a traction on the same boundary.
+     */
+    void
+    check_against(const Triangulation<dim> &triangulation) const;
+
+    std::map<types::boundary_id, std::unique_ptr<Function<dim>>> dirichlet;
+    std::map<types::boundary_id, ComponentMask>                  dirichlet_mask;
+    std::map<types::boundary_id, std::unique_ptr<Function<dim>>> neumann;
+    std::unique_ptr<Function<dim>>                               body_force;
+  };
+} // namespace xcrack
+
+#endif

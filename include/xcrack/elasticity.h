@@ -1,0 +1,110 @@
+#ifndef xcrack_elasticity_h
+#define xcrack_elasticity_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/hp/fe_collection.h>
+#include <deal.II/hp/q_collection.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <xcrack/boundary_conditions.h>
+#include <xcrack/linear_solver.h>
+#include <xcrack/material.h>
+#include <xcrack/mesh.h>
+#include <xcrack/parameters.h>
+#include <xcrack/refinement.h>
+#include <xcrack/statistics.h>
+
+#include <memory>
+
+namespace xcrack
+{
+  using namespace dealii;
+
+  /**
+   * Linear elasticity on a distributed, adaptively refined mesh: the solver
+   * every xcrack run is built on (step-8 for the physics, step-40 for the
+   * parallel data layout).
+   *
+   * The finite element space is an hp::FECollection from the start, with a
+   * single element for the uncracked body. The X-FEM enrichment adds further
+   * elements (Heaviside, tip, both) to this collection and assigns them per
+   * cell; assembly, constraints and output already loop over the collection.
+   *
+   * Construction parses every subsection and builds the mesh; all input
+   * errors surface there, as InputError, before run() writes anything.
+   */
+  template <int dim>
+  class ElasticityProblem
+  {
+  public:
+    /// Declare `subsection Discretization` and `subsection Exact solution`.
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    ElasticityProblem(ParameterHandler &prm,
+                      const MPI_Comm    mpi_communicator = MPI_COMM_WORLD);
+
+    /// Solve on the sequence of meshes and write all results.
+    void
+    run();
+
+    /// One row per solve, as written to statistics.csv.
+    const Statistics &
+    get_statistics() const;
+
+  private:
+    void
+    setup_system();
+    void
+    assemble_system();
+    unsigned int
+    solve();
+    /// Relative L2 and energy-norm errors against the exact solution.
+    std::pair<double, double>
+    compute_errors() const;
+    void
+    output_results(const unsigned int cycle);
+    void
+    print_convergence_table() const;
+
+    MPI_Comm            mpi_communicator;
+    ConditionalOStream  pcout;
+    mutable TimerOutput timer;
+
+    ParameterHandler              &prm;
+    RunParameters                  run_parameters;
+    Material                       material;
+    MeshDescription                mesh_description;
+    BoundaryConditions<dim>        boundary_conditions;
+    Refinement<dim>                refinement;
+    LinearSolver                   linear_solver;
+    unsigned int                   degree = 1;
+    std::unique_ptr<Function<dim>> exact_solution;
+
+    parallel::distributed::Triangulation<dim> triangulation;
+    hp::FECollection<dim>                     fe_collection;
+    hp::QCollection<dim>                      quadrature_collection;
+    hp::QCollection<dim - 1>                  face_quadrature_collection;
+    DoFHandler<dim>                           dof_handler;
+
+    IndexSet                       locally_owned_dofs;
+    IndexSet                       locally_relevant_dofs;
+    AffineConstraints<double>      constraints;
+    TrilinosWrappers::SparseMatrix system_matrix;
+    TrilinosWrappers::MPI::Vector  system_rhs;
+    /// Solution with ghost entries, for output, errors and refinement.
+    TrilinosWrappers::MPI::Vector solution;
+
+    Statistics                                  statistics;
+    std::vector<std::pair<double, std::string>> pvd_records;
+  };
+} // namespace xcrack
+
+#endif

@@ -1,0 +1,549 @@
+#ifndef xcrack_elasticity_templates_h
+#define xcrack_elasticity_templates_h
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/hp/fe_values.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <xcrack/elasticity.h>
+#include <xcrack/input_error.h>
+#include <xcrack/output.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+
+namespace xcrack
+{
+  template <int dim>
+  void
+  ElasticityProblem<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretization");
+    {
+      prm.declare_entry("Degree",
+                        "1",
+                        Patterns::Integer(1, 2),
+                        "Polynomial degree of the displacement (Q1 or Q2).");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Exact solution");
+    {
+      prm.declare_entry("Displacement",
+                        "",
+                        Patterns::Anything(),
+                        "Exact displacement 'ux; uy[; uz]' if known (for "
+                        "verification): L2_error and energy_error are then "
+                        "computed, relative to the norms of the exact "
+                        "solution. Empty if unknown.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  ElasticityProblem<dim>::ElasticityProblem(ParameterHandler &prm,
+                                            const MPI_Comm    mpi_communicator)
+    : mpi_communicator(mpi_communicator)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , timer(mpi_communicator,
+            pcout,
+            TimerOutput::never,
+            TimerOutput::wall_times)
+    , prm(prm)
+    , triangulation(mpi_communicator,
+                    typename Triangulation<dim>::MeshSmoothing(
+                      Triangulation<dim>::smoothing_on_refinement |
+                      Triangulation<dim>::smoothing_on_coarsening))
+  {
+    run_parameters.parse_parameters(prm);
+    check_input(run_parameters.dimension == dim,
+                "Dimension = " + std::to_string(run_parameters.dimension) +
+                  " but this is a " + std::to_string(dim) + "D problem.");
+    material.parse_parameters(prm);
+    mesh_description.parse_parameters(prm);
+    linear_solver.parse_parameters(prm);
+
+    FunctionConstants constants = material.constants(dim);
+    constants["pi"]             = numbers::PI;
+    for (const auto &[name, value] : run_parameters.user_constants)
+      {
+        check_input(constants.count(name) == 0,
+                    "Function constants: '" + name +
+                      "' is a reserved name (E, nu, mu, lambda, pi).");
+        constants[name] = value;
+      }
+    boundary_conditions.parse_parameters(prm, constants);
+    refinement.parse_parameters(prm, constants);
+
+    prm.enter_subsection("Discretization");
+    degree = prm.get_integer("Degree");
+    prm.leave_subsection();
+    prm.enter_subsection("Exact solution");
+    const std::string exact = prm.get("Displacement");
+    prm.leave_subsection();
+    if (!Utilities::trim(exact).empty())
+      exact_solution = std::make_unique<ParsedVectorFunction<dim>>(
+        exact, dim, constants, "Exact solution/Displacement");
+
+    mesh_description.create(triangulation);
+    boundary_conditions.check_against(triangulation);
+    check_input(!boundary_conditions.dirichlet.empty(),
+                "Boundary conditions/Dirichlet is empty: without any "
+                "prescribed displacement the rigid body motions are free and "
+                "the problem has no unique solution.");
+
+    fe_collection.push_back(FESystem<dim>(FE_Q<dim>(degree), dim));
+    quadrature_collection.push_back(QGauss<dim>(degree + 1));
+    face_quadrature_collection.push_back(QGauss<dim - 1>(degree + 1));
+
+    // The output directory must be usable: this is the last check before
+    // any result is written.
+    const std::filesystem::path dir(run_parameters.output_directory);
+    check_input(!std::filesystem::exists(dir) ||
+                  std::filesystem::is_directory(dir),
+                "Output directory = " + run_parameters.output_directory +
+                  ": exists and is not a directory.");
+  }
+
+
+
+  template <int dim>
+  const Statistics &
+  ElasticityProblem<dim>::get_statistics() const
+  {
+    return statistics;
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticityProblem<dim>::setup_system()
+  {
+    TimerOutput::Scope t(timer, "setup");
+
+    dof_handler.reinit(triangulation);
+    dof_handler.distribute_dofs(fe_collection);
+    locally_owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+
+    constraints.clear();
+    constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    for (const auto &[id, function] : boundary_conditions.dirichlet)
+      VectorTools::interpolate_boundary_values(
+        dof_handler,
+        id,
+        *function,
+        constraints,
+        boundary_conditions.dirichlet_mask.at(id));
+    constraints.close();
+
+    DynamicSparsityPattern dsp(locally_relevant_dofs);
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               locally_owned_dofs,
+                                               mpi_communicator,
+                                               locally_relevant_dofs);
+    system_matrix.reinit(locally_owned_dofs,
+                         locally_owned_dofs,
+                         dsp,
+                         mpi_communicator);
+    system_rhs.reinit(locally_owned_dofs, mpi_communicator);
+    solution.reinit(locally_owned_dofs,
+                    locally_relevant_dofs,
+                    mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticityProblem<dim>::assemble_system()
+  {
+    TimerOutput::Scope t(timer, "assemble");
+
+    const double lambda = material.lambda(dim);
+    const double mu     = material.mu();
+
+    hp::FEValues<dim>                hp_fe_values(fe_collection,
+                                   quadrature_collection,
+                                   update_values | update_gradients |
+                                     update_quadrature_points |
+                                     update_JxW_values);
+    hp::FEFaceValues<dim>            hp_fe_face_values(fe_collection,
+                                            face_quadrature_collection,
+                                            update_values |
+                                              update_quadrature_points |
+                                              update_JxW_values);
+    const FEValuesExtractors::Vector displacement(0);
+
+    FullMatrix<double>                   cell_matrix;
+    Vector<double>                       cell_rhs;
+    std::vector<types::global_dof_index> local_dof_indices;
+    std::vector<SymmetricTensor<2, dim>> eps;
+    std::vector<double>                  div;
+    std::vector<Vector<double>>          load;
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          hp_fe_values.reinit(cell);
+          const FEValues<dim> &fe_values = hp_fe_values.get_present_fe_values();
+          const unsigned int   n_dofs    = fe_values.dofs_per_cell;
+          cell_matrix.reinit(n_dofs, n_dofs);
+          cell_rhs.reinit(n_dofs);
+          eps.resize(n_dofs);
+          div.resize(n_dofs);
+
+          if (boundary_conditions.body_force)
+            {
+              load.resize(fe_values.n_quadrature_points, Vector<double>(dim));
+              boundary_conditions.body_force->vector_value_list(
+                fe_values.get_quadrature_points(), load);
+            }
+
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                {
+                  eps[i] = fe_values[displacement].symmetric_gradient(i, q);
+                  div[i] = trace(eps[i]);
+                }
+              const double JxW = fe_values.JxW(q);
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                {
+                  for (unsigned int j = 0; j <= i; ++j)
+                    cell_matrix(i, j) +=
+                      (lambda * div[i] * div[j] + 2. * mu * (eps[i] * eps[j])) *
+                      JxW;
+                  if (boundary_conditions.body_force)
+                    {
+                      const unsigned int c =
+                        fe_values.get_fe().system_to_component_index(i).first;
+                      cell_rhs(i) +=
+                        fe_values.shape_value(i, q) * load[q](c) * JxW;
+                    }
+                }
+            }
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            for (unsigned int j = i + 1; j < n_dofs; ++j)
+              cell_matrix(i, j) = cell_matrix(j, i);
+
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              {
+                const auto it =
+                  boundary_conditions.neumann.find(face->boundary_id());
+                if (it == boundary_conditions.neumann.end())
+                  continue;
+                hp_fe_face_values.reinit(cell, face);
+                const FEFaceValues<dim> &fe_face_values =
+                  hp_fe_face_values.get_present_fe_values();
+                load.resize(fe_face_values.n_quadrature_points,
+                            Vector<double>(dim));
+                it->second->vector_value_list(
+                  fe_face_values.get_quadrature_points(), load);
+                for (const unsigned int q :
+                     fe_face_values.quadrature_point_indices())
+                  for (unsigned int i = 0; i < n_dofs; ++i)
+                    {
+                      const unsigned int c =
+                        fe_values.get_fe().system_to_component_index(i).first;
+                      cell_rhs(i) += fe_face_values.shape_value(i, q) *
+                                     load[q](c) * fe_face_values.JxW(q);
+                    }
+              }
+
+          local_dof_indices.resize(n_dofs);
+          cell->get_dof_indices(local_dof_indices);
+          constraints.distribute_local_to_global(cell_matrix,
+                                                 cell_rhs,
+                                                 local_dof_indices,
+                                                 system_matrix,
+                                                 system_rhs);
+        }
+
+    system_matrix.compress(VectorOperation::add);
+    system_rhs.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ElasticityProblem<dim>::solve()
+  {
+    TimerOutput::Scope t(timer, "solve");
+
+    std::vector<std::vector<bool>> constant_modes;
+    if (linear_solver.type != "direct")
+      DoFTools::extract_constant_modes(dof_handler,
+                                       ComponentMask(dim, true),
+                                       constant_modes);
+
+    TrilinosWrappers::MPI::Vector distributed(locally_owned_dofs,
+                                              mpi_communicator);
+    const unsigned int iterations = linear_solver.solve(system_matrix,
+                                                        distributed,
+                                                        system_rhs,
+                                                        constant_modes);
+    constraints.distribute(distributed);
+    solution = distributed;
+    return iterations;
+  }
+
+
+
+  template <int dim>
+  std::pair<double, double>
+  ElasticityProblem<dim>::compute_errors() const
+  {
+    TimerOutput::Scope t(timer, "errors");
+
+    const double lambda = material.lambda(dim);
+    const double mu     = material.mu();
+    const auto   energy = [&](const SymmetricTensor<2, dim> &e) {
+      return lambda * trace(e) * trace(e) + 2. * mu * (e * e);
+    };
+
+    // Three more points than the assembly rule: the error is then
+    // integrated accurately even for Q2 and smooth but oscillating data.
+    hp::QCollection<dim> error_quadrature;
+    for (unsigned int i = 0; i < fe_collection.size(); ++i)
+      error_quadrature.push_back(QGauss<dim>(fe_collection[i].degree + 3));
+    hp::FEValues<dim>                hp_fe_values(fe_collection,
+                                   error_quadrature,
+                                   update_values | update_gradients |
+                                     update_quadrature_points |
+                                     update_JxW_values);
+    const FEValuesExtractors::Vector displacement(0);
+
+    // [error L2^2, exact L2^2, error energy^2, exact energy^2]
+    std::array<double, 4>                    local{{0, 0, 0, 0}};
+    std::vector<Tensor<1, dim>>              uh;
+    std::vector<SymmetricTensor<2, dim>>     eps_h;
+    std::vector<Vector<double>>              u;
+    std::vector<std::vector<Tensor<1, dim>>> grad_u;
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          hp_fe_values.reinit(cell);
+          const FEValues<dim> &fe_values = hp_fe_values.get_present_fe_values();
+          const unsigned int   n_q       = fe_values.n_quadrature_points;
+          uh.resize(n_q);
+          eps_h.resize(n_q);
+          u.resize(n_q, Vector<double>(dim));
+          grad_u.resize(n_q, std::vector<Tensor<1, dim>>(dim));
+          fe_values[displacement].get_function_values(solution, uh);
+          fe_values[displacement].get_function_symmetric_gradients(solution,
+                                                                   eps_h);
+          exact_solution->vector_value_list(fe_values.get_quadrature_points(),
+                                            u);
+          exact_solution->vector_gradient_list(
+            fe_values.get_quadrature_points(), grad_u);
+
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              Tensor<1, dim> exact_u;
+              Tensor<2, dim> exact_grad;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  exact_u[d]    = u[q](d);
+                  exact_grad[d] = grad_u[q][d];
+                }
+              const SymmetricTensor<2, dim> exact_eps = symmetrize(exact_grad);
+              const double                  JxW       = fe_values.JxW(q);
+              local[0] += (exact_u - uh[q]).norm_square() * JxW;
+              local[1] += exact_u.norm_square() * JxW;
+              local[2] += energy(exact_eps - eps_h[q]) * JxW;
+              local[3] += energy(exact_eps) * JxW;
+            }
+        }
+
+    std::array<double, 4> global;
+    Utilities::MPI::sum(ArrayView<const double>(local.data(), 4),
+                        mpi_communicator,
+                        ArrayView<double>(global.data(), 4));
+    const auto relative = [](const double e2, const double u2) {
+      return (u2 > 0 ? std::sqrt(e2 / u2) : std::sqrt(e2));
+    };
+    return {relative(global[0], global[1]), relative(global[2], global[3])};
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticityProblem<dim>::output_results(const unsigned int cycle)
+  {
+    TimerOutput::Scope t(timer, "output");
+
+    const StressPostprocessor<dim> stress(material);
+    DataOut<dim>                   data_out;
+    data_out.attach_dof_handler(dof_handler);
+    data_out.add_data_vector(
+      solution,
+      std::vector<std::string>(dim, "displacement"),
+      DataOut<dim>::type_dof_data,
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+        dim, DataComponentInterpretation::component_is_part_of_vector));
+    data_out.add_data_vector(solution, stress);
+    Vector<float> subdomain(triangulation.n_active_cells());
+    subdomain = triangulation.locally_owned_subdomain();
+    data_out.add_data_vector(subdomain, "subdomain");
+    data_out.build_patches(degree);
+
+    const std::string  dir  = run_parameters.output_directory + "/";
+    const std::string  base = "solution-" + Utilities::int_to_string(cycle, 3);
+    const unsigned int rank =
+      Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(mpi_communicator);
+    {
+      std::ofstream out(dir + base + "." + Utilities::int_to_string(rank, 4) +
+                        ".vtu");
+      data_out.write_vtu(out);
+    }
+    if (rank == 0)
+      {
+        std::vector<std::string> pieces;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          pieces.push_back(base + "." + Utilities::int_to_string(r, 4) +
+                           ".vtu");
+        std::ofstream pvtu(dir + base + ".pvtu");
+        data_out.write_pvtu_record(pvtu, pieces);
+        pvd_records.emplace_back(cycle, base + ".pvtu");
+        std::ofstream pvd(dir + "solution.pvd");
+        DataOutBase::write_pvd_record(pvd, pvd_records);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticityProblem<dim>::print_convergence_table() const
+  {
+    pcout << std::endl
+          << "Convergence (rates against the mean cell size h = cells^(-1/"
+          << dim << "))" << std::endl
+          << "cycle     cells      dofs   L2_error  rate  energy_error  rate"
+          << std::endl;
+    for (unsigned int r = 0; r < statistics.n_rows(); ++r)
+      {
+        const auto value = [&](const char *c) { return statistics.get(c, r); };
+        pcout << std::setw(5) << r << std::setw(10)
+              << static_cast<long long>(value("cells")) << std::setw(10)
+              << static_cast<long long>(value("dofs")) << std::scientific
+              << std::setprecision(3) << std::setw(11) << value("L2_error");
+        const auto rate = [&](const char *c) {
+          if (r == 0)
+            return std::string("    -");
+          const double h_ratio =
+            std::pow(value("cells") / statistics.get("cells", r - 1), 1. / dim);
+          std::ostringstream s;
+          s << std::fixed << std::setprecision(2) << std::setw(6)
+            << std::log(statistics.get(c, r - 1) / value(c)) /
+                 std::log(h_ratio);
+          return s.str();
+        };
+        pcout << rate("L2_error") << std::setw(14) << value("energy_error")
+              << rate("energy_error") << std::defaultfloat << std::endl;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticityProblem<dim>::run()
+  {
+    // All input was checked in the constructor: from here on results are
+    // written.
+    std::filesystem::create_directories(run_parameters.output_directory);
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      prm.print_parameters(run_parameters.output_directory + "/parameters.prm",
+                           ParameterHandler::ShortPRM);
+
+    pcout << "xcrack: " << dim << "D linear elasticity, Q" << degree
+          << " elements, " << linear_solver.type << " solver" << std::endl;
+
+    std::map<std::string, double> previous_times;
+    for (unsigned int cycle = 0; cycle < refinement.n_cycles; ++cycle)
+      {
+        if (cycle > 0)
+          {
+            TimerOutput::Scope t(timer, "refine");
+            refinement.refine(triangulation, dof_handler, solution);
+          }
+        setup_system();
+        assemble_system();
+        const unsigned int iterations = solve();
+
+        statistics.start_row();
+        statistics.add_value("step", (unsigned long long)cycle);
+        statistics.add_value("cycles", 0ull);
+        statistics.add_value(
+          "cells", (unsigned long long)triangulation.n_global_active_cells());
+        statistics.add_value("dofs", (unsigned long long)dof_handler.n_dofs());
+        statistics.add_value("enriched_dofs", 0ull);
+        statistics.add_value("solver_iterations",
+                             (unsigned long long)iterations);
+
+        pcout << "Cycle " << cycle << ": "
+              << triangulation.n_global_active_cells() << " cells, "
+              << dof_handler.n_dofs() << " dofs";
+        if (linear_solver.type != "direct")
+          pcout << ", " << iterations << " CG iterations";
+        if (exact_solution)
+          {
+            const auto [l2, energy] = compute_errors();
+            statistics.add_value("L2_error", l2);
+            statistics.add_value("energy_error", energy);
+            pcout << std::scientific << std::setprecision(3) << ", L2 error "
+                  << l2 << ", energy error " << energy << std::defaultfloat;
+          }
+        pcout << std::endl;
+
+        if (run_parameters.write_vtu)
+          output_results(cycle);
+
+        // Wall time of each phase in this cycle: the timer accumulates over
+        // the run, so take differences.
+        const auto times =
+          timer.get_summary_data(TimerOutput::OutputData::total_wall_time);
+        for (const std::string phase :
+             {"setup", "assemble", "solve", "errors", "output", "refine"})
+          {
+            const double total = (times.count(phase) ? times.at(phase) : 0.);
+            statistics.add_value("t_" + phase, total - previous_times[phase]);
+            previous_times[phase] = total;
+          }
+        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+          statistics.write_csv(run_parameters.output_directory +
+                               "/statistics.csv");
+      }
+
+    if (exact_solution && statistics.n_rows() > 1)
+      print_convergence_table();
+    if (run_parameters.timing_summary)
+      timer.print_summary();
+  }
+} // namespace xcrack
+
+#endif

@@ -1,0 +1,53 @@
+#ifndef xcrack_linear_solver_h
+#define xcrack_linear_solver_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <vector>
+
+namespace xcrack
+{
+  using namespace dealii;
+
+  /**
+   * The linear solver of the elasticity system (`subsection Linear solver`).
+   *
+   * - `direct` (default): MUMPS through Trilinos Amesos, distributed over
+   *   the MPI ranks. Robust for the badly conditioned matrices of enriched
+   *   spaces, and the reference for every other choice.
+   * - `cg amg`: conjugate gradients preconditioned by Trilinos ML algebraic
+   *   multigrid, with the rigid translations as near-null space. Memory
+   *   scales linearly, so it is the choice for large uncracked or mildly
+   *   enriched problems.
+   */
+  class LinearSolver
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Solve @p matrix x = @p rhs. @p constant_modes are the per-component
+     * constant modes of the displacement space (for AMG). Returns the number
+     * of iterations (1 for the direct solver). Throws if the iterative
+     * solver does not converge.
+     */
+    unsigned int
+    solve(const TrilinosWrappers::SparseMatrix &matrix,
+          TrilinosWrappers::MPI::Vector        &x,
+          const TrilinosWrappers::MPI::Vector  &rhs,
+          const std::vector<std::vector<bool>> &constant_modes) const;
+
+    std::string  type               = "direct";
+    double       relative_tolerance = 1e-10;
+    unsigned int max_iterations     = 2000;
+  };
+} // namespace xcrack
+
+#endif

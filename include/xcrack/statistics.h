@@ -1,0 +1,51 @@
+#ifndef xcrack_statistics_h
+#define xcrack_statistics_h
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace xcrack
+{
+  /**
+   * The run's table of one row per solve, written as `statistics.csv`.
+   * Columns keep the order in which they first appear; a row that lacks a
+   * column leaves its cell empty. Column names are fixed by DESIGN.md
+   * ("Outputs that others read") so that scripts can rely on them.
+   */
+  class Statistics
+  {
+  public:
+    /// Start a new row; later add_value() calls fill it.
+    void
+    start_row();
+
+    void
+    add_value(const std::string &column, const double value);
+
+    void
+    add_value(const std::string &column, const unsigned long long value);
+
+    /// Value of @p column in row @p row (NaN if the cell is empty).
+    double
+    get(const std::string &column, const unsigned int row) const;
+
+    unsigned int
+    n_rows() const;
+
+    /// Write a header line and all rows, comma separated.
+    void
+    write_csv(const std::string &filename) const;
+
+  private:
+    struct Cell
+    {
+      double value;
+      bool   is_integer;
+    };
+    std::vector<std::string>                 columns;
+    std::vector<std::map<std::string, Cell>> rows;
+  };
+} // namespace xcrack
+
+#endif

@@ -1,0 +1,200 @@
+#include <deal.II/base/mpi.h>
+
+#include <xcrack/boundary_conditions.h>
+#include <xcrack/input_error.h>
+
+#include <set>
+
+namespace xcrack
+{
+  template <int dim>
+  void
+  BoundaryConditions<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary conditions");
+    {
+      prm.declare_entry("Dirichlet",
+                        "",
+                        Patterns::Anything(),
+                        "Prescribed displacements: items 'id: ux; uy[; uz]' "
+                        "separated by '|'.");
+      prm.declare_entry("Dirichlet components",
+                        "",
+                        Patterns::Anything(),
+                        "Components prescribed on a Dirichlet boundary, as "
+                        "items 'id: letters' separated by '|' (letters among "
+                        "x, y, z). A boundary not listed has all components "
+                        "prescribed.");
+      prm.declare_entry("Neumann",
+                        "",
+                        Patterns::Anything(),
+                        "Prescribed tractions (force per area, sigma.n): "
+                        "items 'id: tx; ty[; tz]' separated by '|'.");
+      prm.declare_entry("Body force",
+                        "",
+                        Patterns::Anything(),
+                        "Force per volume 'fx; fy[; fz]'; empty for none.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  namespace
+  {
+    /// Split 'id: value | id: value' into a map, naming @p entry in errors.
+    std::map<types::boundary_id, std::string>
+    parse_id_map(const std::string &text, const std::string &entry)
+    {
+      std::map<types::boundary_id, std::string> result;
+      for (const std::string &item : split_and_trim(text, '|'))
+        {
+          const auto colon = item.find(':');
+          check_input(colon != std::string::npos,
+                      entry + ": item '" + item +
+                        "' is not of the form 'boundary id: value'.");
+          const std::string id_text = Utilities::trim(item.substr(0, colon));
+          int               id      = -1;
+          try
+            {
+              id = Utilities::string_to_int(id_text);
+            }
+          catch (...)
+            {}
+          check_input(id >= 0 && id < numbers::internal_face_boundary_id,
+                      entry + ": '" + id_text +
+                        "' is not a valid boundary id (a non-negative "
+                        "integer).");
+          check_input(result.count(id) == 0,
+                      entry + ": boundary id " + id_text +
+                        " appears more than once.");
+          result[id] = Utilities::trim(item.substr(colon + 1));
+        }
+      return result;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::parse_parameters(ParameterHandler        &prm,
+                                            const FunctionConstants &constants)
+  {
+    prm.enter_subsection("Boundary conditions");
+    const std::string dirichlet_text  = prm.get("Dirichlet");
+    const std::string mask_text       = prm.get("Dirichlet components");
+    const std::string neumann_text    = prm.get("Neumann");
+    const std::string body_force_text = prm.get("Body force");
+    prm.leave_subsection();
+
+    const std::string section = "Boundary conditions/";
+    dirichlet.clear();
+    neumann.clear();
+    dirichlet_mask.clear();
+
+    for (const auto &[id, expr] :
+         parse_id_map(dirichlet_text, section + "Dirichlet"))
+      {
+        dirichlet[id] = std::make_unique<ParsedVectorFunction<dim>>(
+          expr,
+          dim,
+          constants,
+          section + "Dirichlet (boundary " + std::to_string(id) + ")");
+        dirichlet_mask[id] = ComponentMask(dim, true);
+      }
+
+    for (const auto &[id, letters] :
+         parse_id_map(mask_text, section + "Dirichlet components"))
+      {
+        const std::string entry = section + "Dirichlet components";
+        check_input(dirichlet.count(id) == 1,
+                    entry + ": boundary id " + std::to_string(id) +
+                      " has no Dirichlet data.");
+        ComponentMask mask(dim, false);
+        for (const char c : letters)
+          {
+            if (c == ' ' || c == ',')
+              continue;
+            const int d = c - 'x';
+            check_input(d >= 0 && d < dim,
+                        entry + ": '" + std::string(1, c) + "' (boundary " +
+                          std::to_string(id) +
+                          ") is not a displacement component of a " +
+                          std::to_string(dim) + "D run (use x, y" +
+                          (dim == 3 ? ", z" : "") + ").");
+            mask.set(d, true);
+          }
+        check_input(mask.n_selected_components() > 0,
+                    entry + ": boundary " + std::to_string(id) +
+                      " selects no component.");
+        dirichlet_mask[id] = mask;
+      }
+
+    for (const auto &[id, expr] :
+         parse_id_map(neumann_text, section + "Neumann"))
+      neumann[id] = std::make_unique<ParsedVectorFunction<dim>>(
+        expr,
+        dim,
+        constants,
+        section + "Neumann (boundary " + std::to_string(id) + ")");
+
+    // A boundary with both kinds of data is fine only if the traction acts
+    // on the components the displacement leaves free (a roller with a
+    // tangential load, say). We cannot tell which traction components are
+    // meant to be zero, so we reject the overlap only when the Dirichlet
+    // data fixes every component: then the traction would be ignored.
+    for (const auto &[id, f] : neumann)
+      check_input(dirichlet.count(id) == 0 ||
+                    dirichlet_mask.at(id).n_selected_components() < dim,
+                  section + "Dirichlet and " + section +
+                    "Neumann: boundary id " + std::to_string(id) +
+                    " has both a full displacement and a traction; the "
+                    "traction would be ignored.");
+
+    body_force.reset();
+    if (!Utilities::trim(body_force_text).empty())
+      body_force = std::make_unique<ParsedVectorFunction<dim>>(
+        body_force_text, dim, constants, section + "Body force");
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::check_against(
+    const Triangulation<dim> &triangulation) const
+  {
+    const std::vector<types::boundary_id> local_ids =
+      triangulation.get_boundary_ids();
+    // On a distributed mesh each rank sees the ids of its own cells only.
+    std::set<types::boundary_id> ids(local_ids.begin(), local_ids.end());
+    const MPI_Comm               comm = triangulation.get_communicator();
+    if (Utilities::MPI::n_mpi_processes(comm) > 1)
+      {
+        const auto all = Utilities::MPI::all_gather(comm, local_ids);
+        for (const auto &v : all)
+          ids.insert(v.begin(), v.end());
+      }
+
+    std::string known;
+    for (const auto id : ids)
+      known += (known.empty() ? "" : ", ") + std::to_string(id);
+
+    const auto check = [&](const auto &map, const std::string &entry) {
+      for (const auto &[id, f] : map)
+        check_input(ids.count(id) == 1,
+                    "Boundary conditions/" + entry + ": boundary id " +
+                      std::to_string(id) +
+                      " does not exist on the mesh (its ids are " + known +
+                      ").");
+    };
+    check(dirichlet, "Dirichlet");
+    check(neumann, "Neumann");
+  }
+
+
+
+  template class BoundaryConditions<2>;
+  template class BoundaryConditions<3>;
+} // namespace xcrack

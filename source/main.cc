@@ -1,0 +1,81 @@
+/**
+ * xcrack: fatigue crack propagation with the extended finite element method.
+ *
+ *   xcrack FILE.prm              run the scene of FILE.prm
+ *   mpirun -np N xcrack FILE.prm the same on N ranks
+ *   xcrack --print-parameters    every parameter with default and documentation
+ *
+ * Exit codes: 0 success, 1 bad input (message names the culprit), 2 failure
+ * during the computation.
+ */
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <xcrack/input_error.h>
+#include <xcrack/parameters.h>
+#include <xcrack/run.h>
+
+#include <iostream>
+#include <string>
+
+namespace
+{
+  void
+  print_usage(std::ostream &out)
+  {
+    out << "Usage: xcrack FILE.prm\n"
+        << "       mpirun -np N xcrack FILE.prm\n"
+        << "       xcrack --print-parameters\n";
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  using namespace dealii;
+  Utilities::MPI::MPI_InitFinalize mpi_initialization(argc, argv, 1);
+  const bool root = (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+
+  if (argc != 2)
+    {
+      if (root)
+        print_usage(std::cerr);
+      return 1;
+    }
+  const std::string argument = argv[1];
+
+  try
+    {
+      ParameterHandler prm;
+      xcrack::declare_all_parameters(prm);
+
+      if (argument == "--print-parameters")
+        {
+          if (root)
+            prm.print_parameters(std::cout, ParameterHandler::PRM);
+          return 0;
+        }
+      if (argument == "--help" || argument == "-h")
+        {
+          if (root)
+            print_usage(std::cout);
+          return 0;
+        }
+
+      xcrack::read_parameter_file(prm, argument);
+      xcrack::run(prm);
+    }
+  catch (const xcrack::InputError &e)
+    {
+      if (root)
+        std::cerr << "xcrack: input error: " << e.what() << std::endl;
+      return 1;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "xcrack: error: " << e.what() << std::endl;
+      return 2;
+    }
+  return 0;
+}

@@ -1,0 +1,154 @@
+#include <xcrack/boundary_conditions.h>
+#include <xcrack/elasticity.h>
+#include <xcrack/input_error.h>
+#include <xcrack/linear_solver.h>
+#include <xcrack/material.h>
+#include <xcrack/mesh.h>
+#include <xcrack/parameters.h>
+#include <xcrack/refinement.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace xcrack
+{
+  void
+  RunParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "Space dimension of the run: 2 or 3.");
+    prm.declare_entry("Output directory",
+                      "output",
+                      Patterns::DirectoryName(),
+                      "Where results are written; created if missing. Files "
+                      "of an earlier run are overwritten only once this run "
+                      "has passed all its input checks.");
+    prm.declare_entry("Function constants",
+                      "",
+                      Patterns::Anything(),
+                      "Named constants for all expressions of the file, as "
+                      "'name = value' items separated by ','. E, nu, mu, "
+                      "lambda (from the material) and pi are always there.");
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Write vtu",
+                        "true",
+                        Patterns::Bool(),
+                        "Write solution-<cycle>.pvtu files and solution.pvd.");
+      prm.declare_entry("Timing summary",
+                        "true",
+                        Patterns::Bool(),
+                        "Print the wall-time summary at the end of the run "
+                        "(tests switch it off to keep their output stable).");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  RunParameters::parse_parameters(ParameterHandler &prm)
+  {
+    dimension        = prm.get_integer("Dimension");
+    output_directory = prm.get("Output directory");
+    check_input(!output_directory.empty(), "Output directory is empty.");
+
+    user_constants.clear();
+    for (const std::string &item :
+         split_and_trim(prm.get("Function constants"), ','))
+      {
+        const auto eq = item.find('=');
+        check_input(eq != std::string::npos,
+                    "Function constants: item '" + item +
+                      "' is not of the form 'name = value'.");
+        const std::string name  = Utilities::trim(item.substr(0, eq));
+        const std::string value = Utilities::trim(item.substr(eq + 1));
+        check_input(!name.empty() && !std::isdigit(name[0]),
+                    "Function constants: '" + name + "' is not a valid name.");
+        try
+          {
+            user_constants[name] = Utilities::string_to_double(value);
+          }
+        catch (...)
+          {
+            throw InputError("Function constants: the value '" + value +
+                             "' of " + name + " is not a number.");
+          }
+      }
+
+    prm.enter_subsection("Output");
+    {
+      write_vtu      = prm.get_bool("Write vtu");
+      timing_summary = prm.get_bool("Timing summary");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  declare_all_parameters(ParameterHandler &prm)
+  {
+    RunParameters::declare_parameters(prm);
+    MeshDescription::declare_parameters(prm);
+    Material::declare_parameters(prm);
+    // The declarations do not depend on the dimension.
+    BoundaryConditions<3>::declare_parameters(prm);
+    Refinement<3>::declare_parameters(prm);
+    LinearSolver::declare_parameters(prm);
+    ElasticityProblem<3>::declare_parameters(prm);
+  }
+
+
+
+  namespace
+  {
+    /// The message of a deal.II exception without its source location.
+    std::string
+    message_of(const std::exception &e)
+    {
+      if (const auto *deal_exc = dynamic_cast<const ExceptionBase *>(&e))
+        {
+          std::ostringstream info;
+          deal_exc->print_info(info);
+          return Utilities::trim(info.str());
+        }
+      return e.what();
+    }
+  } // namespace
+
+
+
+  void
+  read_parameter_file(ParameterHandler &prm, const std::string &filename)
+  {
+    std::ifstream in(filename);
+    check_input(static_cast<bool>(in),
+                "Cannot open the parameter file '" + filename + "'.");
+    try
+      {
+        prm.parse_input(in, filename);
+      }
+    catch (const std::exception &e)
+      {
+        throw InputError("Parameter file '" + filename + "': " + message_of(e));
+      }
+  }
+
+
+
+  void
+  read_parameter_string(ParameterHandler &prm, const std::string &content)
+  {
+    try
+      {
+        prm.parse_input_from_string(content, "", false);
+      }
+    catch (const std::exception &e)
+      {
+        throw InputError("Parameter input: " + message_of(e));
+      }
+  }
+} // namespace xcrack

@@ -1,0 +1,115 @@
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <xcrack/input_error.h>
+#include <xcrack/parsed_function.h>
+
+#include <sstream>
+
+namespace xcrack
+{
+  std::vector<std::string>
+  split_and_trim(const std::string &text, const char separator)
+  {
+    std::vector<std::string> parts;
+    if (Utilities::trim(text).empty())
+      return parts;
+    std::string       part;
+    std::stringstream stream(text);
+    while (std::getline(stream, part, separator))
+      parts.push_back(Utilities::trim(part));
+    if (!text.empty() && text.back() == separator)
+      parts.emplace_back();
+    return parts;
+  }
+
+
+
+  namespace
+  {
+    std::string
+    coordinate_names(const unsigned int dim)
+    {
+      return (dim == 1 ? "x" : (dim == 2 ? "x,y" : "x,y,z"));
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  ParsedVectorFunction<dim>::ParsedVectorFunction(
+    const std::string       &expressions,
+    const unsigned int       n_components,
+    const FunctionConstants &constants,
+    const std::string       &entry)
+    // A step of 1e-4 balances the h^4 truncation error of the fourth-order
+    // formula against round-off (eps/h) for functions of unit scale.
+    : AutoDerivativeFunction<dim>(1e-4, n_components)
+    , parser(n_components)
+  {
+    this->set_formula(AutoDerivativeFunction<dim>::FourthOrder);
+
+    const std::vector<std::string> parts = split_and_trim(expressions, ';');
+    check_input(parts.size() == n_components,
+                entry + " = '" + expressions + "': expected " +
+                  std::to_string(n_components) +
+                  " expressions separated by ';' (one per component), got " +
+                  std::to_string(parts.size()) + ".");
+    for (const auto &part : parts)
+      check_input(!part.empty(),
+                  entry + " = '" + expressions +
+                    "': a component expression is empty.");
+
+    try
+      {
+        parser.initialize(coordinate_names(dim), parts, constants);
+        // muparser reports some errors only on evaluation: try once at the
+        // origin so that a typo fails at start-up, not deep in assembly.
+        Vector<double> values(n_components);
+        parser.vector_value(Point<dim>(), values);
+      }
+    catch (const std::exception &e)
+      {
+        std::ostringstream message;
+        message << entry << " = '" << expressions
+                << "': cannot evaluate the expression. Variables are "
+                << coordinate_names(dim) << "; constants are";
+        for (const auto &c : constants)
+          message << ' ' << c.first;
+        message << '.';
+        if (const auto *deal_exc = dynamic_cast<const ExceptionBase *>(&e))
+          {
+            std::ostringstream info;
+            deal_exc->print_info(info);
+            message << " Parser says: " << Utilities::trim(info.str());
+          }
+        throw InputError(message.str());
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  ParsedVectorFunction<dim>::value(const Point<dim>  &p,
+                                   const unsigned int component) const
+  {
+    return parser.value(p, component);
+  }
+
+
+
+  template <int dim>
+  void
+  ParsedVectorFunction<dim>::vector_value(const Point<dim> &p,
+                                          Vector<double>   &values) const
+  {
+    parser.vector_value(p, values);
+  }
+
+
+
+  template class ParsedVectorFunction<2>;
+  template class ParsedVectorFunction<3>;
+} // namespace xcrack
