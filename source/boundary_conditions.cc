@@ -61,7 +61,8 @@ namespace xcrack
             }
           catch (...)
             {}
-          check_input(id >= 0 && id < numbers::internal_face_boundary_id,
+          check_input(id >= 0 && static_cast<types::boundary_id>(id) <
+                                   numbers::internal_face_boundary_id,
                       entry + ": '" + id_text +
                         "' is not a valid boundary id (a non-negative "
                         "integer).");

@@ -1,3 +1,5 @@
+#include <deal.II/base/utilities.h>
+
 #include <xcrack/input_error.h>
 #include <xcrack/material.h>
 
@@ -42,10 +44,11 @@ namespace xcrack
     prm.leave_subsection();
 
     check_input(youngs_modulus > 0,
-                "Material/Young's modulus = " + std::to_string(youngs_modulus) +
-                  ": must be positive.");
+                "Material/Young's modulus = " +
+                  Utilities::to_string(youngs_modulus) + ": must be positive.");
     check_input(poisson_ratio > -1 && poisson_ratio < 0.5,
-                "Material/Poisson's ratio = " + std::to_string(poisson_ratio) +
+                "Material/Poisson's ratio = " +
+                  Utilities::to_string(poisson_ratio) +
                   ": must satisfy -1 < nu < 0.5 (nu = 0.5 is incompressible, "
                   "which a displacement formulation cannot represent).");
   }

@@ -74,9 +74,11 @@ namespace xcrack
     void
     print_convergence_table() const;
 
-    MPI_Comm            mpi_communicator;
-    ConditionalOStream  pcout;
-    mutable TimerOutput timer;
+    MPI_Comm           mpi_communicator;
+    ConditionalOStream pcout;
+    /// Created by run(): a timer destroyed while an input error propagates
+    /// out of the constructor would print a warning.
+    std::unique_ptr<TimerOutput> timer;
 
     ParameterHandler              &prm;
     RunParameters                  run_parameters;

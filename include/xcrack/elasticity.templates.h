@@ -58,10 +58,6 @@ namespace xcrack
                                             const MPI_Comm    mpi_communicator)
     : mpi_communicator(mpi_communicator)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-    , timer(mpi_communicator,
-            pcout,
-            TimerOutput::never,
-            TimerOutput::wall_times)
     , prm(prm)
     , triangulation(mpi_communicator,
                     typename Triangulation<dim>::MeshSmoothing(
@@ -133,7 +129,7 @@ namespace xcrack
   void
   ElasticityProblem<dim>::setup_system()
   {
-    TimerOutput::Scope t(timer, "setup");
+    TimerOutput::Scope t(*timer, "setup");
 
     dof_handler.reinit(triangulation);
     dof_handler.distribute_dofs(fe_collection);
@@ -174,7 +170,7 @@ namespace xcrack
   void
   ElasticityProblem<dim>::assemble_system()
   {
-    TimerOutput::Scope t(timer, "assemble");
+    TimerOutput::Scope t(*timer, "assemble");
 
     const double lambda = material.lambda(dim);
     const double mu     = material.mu();
@@ -287,7 +283,7 @@ namespace xcrack
   unsigned int
   ElasticityProblem<dim>::solve()
   {
-    TimerOutput::Scope t(timer, "solve");
+    TimerOutput::Scope t(*timer, "solve");
 
     std::vector<std::vector<bool>> constant_modes;
     if (linear_solver.type != "direct")
@@ -312,7 +308,7 @@ namespace xcrack
   std::pair<double, double>
   ElasticityProblem<dim>::compute_errors() const
   {
-    TimerOutput::Scope t(timer, "errors");
+    TimerOutput::Scope t(*timer, "errors");
 
     const double lambda = material.lambda(dim);
     const double mu     = material.mu();
@@ -391,7 +387,7 @@ namespace xcrack
   void
   ElasticityProblem<dim>::output_results(const unsigned int cycle)
   {
-    TimerOutput::Scope t(timer, "output");
+    TimerOutput::Scope t(*timer, "output");
 
     const StressPostprocessor<dim> stress(material);
     DataOut<dim>                   data_out;
@@ -475,6 +471,10 @@ namespace xcrack
   {
     // All input was checked in the constructor: from here on results are
     // written.
+    timer = std::make_unique<TimerOutput>(mpi_communicator,
+                                          pcout,
+                                          TimerOutput::never,
+                                          TimerOutput::wall_times);
     std::filesystem::create_directories(run_parameters.output_directory);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       prm.print_parameters(run_parameters.output_directory + "/parameters.prm",
@@ -488,7 +488,7 @@ namespace xcrack
       {
         if (cycle > 0)
           {
-            TimerOutput::Scope t(timer, "refine");
+            TimerOutput::Scope t(*timer, "refine");
             refinement.refine(triangulation, dof_handler, solution);
           }
         setup_system();
@@ -510,6 +510,12 @@ namespace xcrack
               << dof_handler.n_dofs() << " dofs";
         if (linear_solver.type != "direct")
           pcout << ", " << iterations << " CG iterations";
+        // The largest displacement component: a first sanity check of any
+        // run (and what the demo compares with beam theory).
+        const double max_displacement = solution.linfty_norm();
+        statistics.add_value("max_displacement", max_displacement);
+        pcout << std::scientific << std::setprecision(4) << ", max |u_i| "
+              << max_displacement << std::defaultfloat;
         if (exact_solution)
           {
             const auto [l2, energy] = compute_errors();
@@ -526,7 +532,7 @@ namespace xcrack
         // Wall time of each phase in this cycle: the timer accumulates over
         // the run, so take differences.
         const auto times =
-          timer.get_summary_data(TimerOutput::OutputData::total_wall_time);
+          timer->get_summary_data(TimerOutput::OutputData::total_wall_time);
         for (const std::string phase :
              {"setup", "assemble", "solve", "errors", "output", "refine"})
           {
@@ -542,7 +548,7 @@ namespace xcrack
     if (exact_solution && statistics.n_rows() > 1)
       print_convergence_table();
     if (run_parameters.timing_summary)
-      timer.print_summary();
+      timer->print_summary();
   }
 } // namespace xcrack
 

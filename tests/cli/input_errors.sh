@@ -1,1 +1,67 @@
-exit 0
+#!/usr/bin/env bash
+# Requirement: on bad input xcrack exits with status 1 before any work, with a
+# message that names the culprit (and the line of the parameter file where
+# ParameterHandler knows it), and leaves the results of an earlier run in the
+# output directory untouched. A valid run writes its VTU and CSV files.
+# --print-parameters lists every entry with its documentation.
+#
+#   input_errors.sh XCRACK_EXECUTABLE THIS_DIRECTORY
+set -u
+xcrack="$1"
+here="$2"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+failures=0
+
+fail() { echo "FAILED: $*"; failures=$((failures + 1)); }
+
+# expect_error NAME EXPECTED_REGEX < prm text
+expect_error() {
+  local name="$1" regex="$2"
+  cat > "$name.prm"
+  "$xcrack" "$name.prm" > "$name.log" 2>&1
+  local status=$?
+  [ "$status" -eq 1 ] || fail "$name: exit status $status, expected 1"
+  grep -Ezq -- "$regex" "$name.log" || { fail "$name: message does not match '$regex':"; cat "$name.log"; }
+}
+
+# An earlier run's results, which no failed start may touch.
+cp "$here/valid.prm" valid.prm
+"$xcrack" valid.prm > valid.log 2>&1 || { fail "valid run: exit status $?"; cat valid.log; }
+for f in out/statistics.csv out/solution.pvd out/solution-000.pvtu out/solution-001.pvtu out/parameters.prm; do
+  [ -s "$f" ] || fail "valid run did not write $f"
+done
+grep -q '^step,cycles,cells,dofs,' out/statistics.csv || fail "statistics.csv header"
+[ "$(wc -l < out/statistics.csv)" -eq 3 ] || fail "statistics.csv should have a header and 2 rows"
+snapshot="$(cd out && ls -l --time-style=full-iso && md5sum ./*)"
+
+expect_error unknown_entry "Line <5> of file <unknown_entry.prm>: No entry with name <Subdivision>" \
+  < <(sed 's/set Subdivisions = 2, 2/set Subdivision = 2, 2/' valid.prm)
+expect_error wrong_type "Line <12>.*two.*Number of cycles" \
+  < <(sed 's/set Number of cycles = 2/set Number of cycles = two/' valid.prm)
+expect_error missing_mesh "Mesh/File name = missing.msh: cannot open" \
+  < <(sed 's/set Subdivisions = 2, 2/set Type = file\n  set File name = missing.msh/' valid.prm)
+expect_error both_kinds_on_one_boundary "boundary id 0 has both a full displacement and a traction" \
+  < <(sed 's/set Neumann   = 1: 1; 0/set Neumann = 0: 1; 0/' valid.prm)
+expect_error unknown_boundary "Neumann: boundary id 9 does not exist on the mesh" \
+  < <(sed 's/set Neumann   = 1: 1; 0/set Neumann = 9: 1; 0/' valid.prm)
+expect_error no_support "Dirichlet is empty" < <(printf 'set Dimension = 2\n')
+"$xcrack" does_not_exist.prm > nofile.log 2>&1
+[ $? -eq 1 ] && grep -q "Cannot open the parameter file 'does_not_exist.prm'" nofile.log ||
+  fail "missing parameter file"
+
+[ "$snapshot" = "$(cd out && ls -l --time-style=full-iso && md5sum ./*)" ] ||
+  fail "a failed start changed the earlier results in out/"
+
+"$xcrack" --print-parameters > params.log 2>&1 || fail "--print-parameters: exit status $?"
+for entry in "Dimension" "Output directory" "Young's modulus" "Dirichlet components" "Number of cycles"; do
+  grep -q "set $entry" params.log || fail "--print-parameters does not list '$entry'"
+done
+
+if [ "$failures" -eq 0 ]; then
+  echo "cli/input_errors: all checks passed"
+else
+  echo "cli/input_errors: $failures check(s) failed"
+  exit 1
+fi

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Build xcrack in build/<type> (type: release or debug), installing the Debian
+# packages it needs first if they are missing. Idempotent: a second call only
+# rebuilds what changed.
+#
+#   contrib/build.sh release    # optimised, for runs and studies
+#   contrib/build.sh debug      # deal.II's debug library, for the test suite
+set -euo pipefail
+
+type="${1:-release}"
+case "$type" in
+  release) cmake_type=Release ;;
+  debug)   cmake_type=Debug ;;
+  *) echo "contrib/build.sh: build type must be 'release' or 'debug', not '$type'" >&2; exit 1 ;;
+esac
+
+top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+"$top/contrib/install_dependencies.sh"
+
+build="$top/build/$type"
+mkdir -p "$build"
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  cmake -S "$top" -B "$build" -DCMAKE_BUILD_TYPE="$cmake_type" > "$build/cmake.log" \
+    || { cat "$build/cmake.log"; exit 1; }
+fi
+cmake --build "$build" -- -j"$(nproc)"

@@ -1,0 +1,135 @@
+// Requirement: every kind of bad input stops the run at set-up with an
+// InputError whose message names the culprit (entry, line, boundary id, file):
+// unknown entries, wrong types, out-of-range values, malformed or
+// inconsistent expressions, boundary ids absent from the mesh, impossible
+// combinations, a missing mesh file, an unusable output directory. A valid
+// input is accepted.
+
+#include <deal.II/base/mpi.h>
+
+#include <xcrack/elasticity.h>
+#include <xcrack/input_error.h>
+#include <xcrack/parameters.h>
+
+#include <fstream>
+#include <regex>
+
+using namespace dealii;
+
+std::ofstream logfile("output");
+
+// A valid 2D input; each case below changes one thing in it.
+const std::string valid = R"(set Dimension = 2
+set Output directory = results
+subsection Output
+  set Write vtu = false
+  set Timing summary = false
+end
+subsection Mesh
+  set Type = box
+  set Lower corner = 0, 0
+  set Upper corner = 2, 1
+  set Subdivisions = 2, 1
+end
+subsection Material
+  set Poisson's ratio = 0.3
+end
+subsection Boundary conditions
+  set Dirichlet = 0: 0; 0
+  set Neumann = 1: 1; 0
+end
+)";
+
+/// Set up a problem from @p input and print what happened.
+void
+check(const std::string &what, const std::string &input)
+{
+  logfile << what << ":\n  ";
+  try
+    {
+      ParameterHandler prm;
+      xcrack::declare_all_parameters(prm);
+      xcrack::read_parameter_string(prm, input);
+      if (prm.get_integer("Dimension") == 2)
+        xcrack::ElasticityProblem<2> problem(prm);
+      else
+        xcrack::ElasticityProblem<3> problem(prm);
+      logfile << "accepted" << std::endl;
+    }
+  catch (const xcrack::InputError &e)
+    {
+      logfile << e.what() << std::endl;
+    }
+}
+
+/// The valid input with @p from replaced by @p to.
+std::string
+changed(const std::string &from, const std::string &to)
+{
+  const auto pos = valid.find(from);
+  AssertThrow(pos != std::string::npos, ExcMessage("no '" + from + "'"));
+  return std::string(valid).replace(pos, from.size(), to);
+}
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  {
+    std::ofstream not_a_directory("a_file");
+  }
+
+  check("valid input", valid);
+  check("unknown entry", changed("set Poisson's ratio", "set Poissons ratio"));
+  check("wrong type", changed("ratio = 0.3", "ratio = abc"));
+  check("out of range", changed("ratio = 0.3", "ratio = 0.5"));
+  check("dimension out of range", changed("Dimension = 2", "Dimension = 4"));
+  check("unknown subsection",
+        changed("subsection Material", "subsection Materials"));
+  check("unbalanced subsection", valid + "subsection Output\n");
+  check("too few components",
+        changed("Dirichlet = 0: 0; 0", "Dirichlet = 0: 0"));
+  check("expression typo",
+        changed("Dirichlet = 0: 0; 0", "Dirichlet = 0: sin(x; 0"));
+  check("unknown variable", changed("Neumann = 1: 1; 0", "Neumann = 1: z; 0"));
+  check("item without id", changed("Neumann = 1: 1; 0", "Neumann = 1; 0"));
+  check("boundary id not on the mesh",
+        changed("Neumann = 1: 1; 0", "Neumann = 7: 1; 0"));
+  check("same id twice",
+        changed("Dirichlet = 0: 0; 0", "Dirichlet = 0: 0; 0 | 0: 1; 1"));
+  check("component letter of another dimension",
+        changed("Dirichlet = 0: 0; 0",
+                "Dirichlet = 0: 0; 0\nset Dirichlet components = 0: z"));
+  check("full displacement and traction on one boundary",
+        changed("Neumann = 1: 1; 0", "Neumann = 0: 1; 0"));
+  check("roller with a traction is fine",
+        changed("Dirichlet = 0: 0; 0",
+                "Dirichlet = 0: 0; 0 | 1: 0; 0\n"
+                "set Dirichlet components = 1: x"));
+  check("no Dirichlet data", changed("Dirichlet = 0: 0; 0", "Dirichlet ="));
+  check("body force with 3 components in 2D",
+        changed("Neumann = 1: 1; 0",
+                "Neumann = 1: 1; 0\nset Body force = 0; 0; -1"));
+  check("reserved constant name", "set Function constants = E = 2\n" + valid);
+  check("constant that is not a number",
+        "set Function constants = a = two\n" + valid);
+  check("missing mesh file",
+        changed("set Type = box",
+                "set Type = file\n  set File name = nowhere.msh"));
+  check("box corners swapped",
+        changed("set Upper corner = 2, 1", "set Upper corner = -2, 1"));
+  check("subdivisions not positive",
+        changed("set Subdivisions = 2, 1", "set Subdivisions = 2, 0"));
+  check("too few coordinates",
+        changed("set Lower corner = 0, 0", "set Lower corner = 0"));
+  check("bad generator arguments",
+        changed("set Type = box",
+                "set Type = generator\n"
+                "  set Generator name = hyper_ball\n"
+                "  set Generator arguments = 0 : 1"));
+  check("bad refinement region",
+        valid + "subsection Mesh refinement\n  set Strategy = region\n"
+                "  set Region = 0.1 - r\nend\n");
+  check("output directory is a file",
+        changed("Output directory = results", "Output directory = a_file"));
+}
