@@ -1,4 +1,5 @@
 #include <xcrack/boundary_conditions.h>
+#include <xcrack/crack/crack_set.h>
 #include <xcrack/elasticity.h>
 #include <xcrack/input_error.h>
 #include <xcrack/linear_solver.h>
@@ -97,6 +98,7 @@ namespace xcrack
     // The declarations do not depend on the dimension.
     BoundaryConditions<3>::declare_parameters(prm);
     Refinement<3>::declare_parameters(prm);
+    CrackSet<3>::declare_parameters(prm);
     LinearSolver::declare_parameters(prm);
     ElasticityProblem<3>::declare_parameters(prm);
   }

@@ -40,6 +40,31 @@ subsection Boundary conditions
 end
 )";
 
+// A valid 3D input with a penny crack.
+const std::string valid_3d = R"(set Dimension = 3
+set Output directory = results
+subsection Output
+  set Write vtu = false
+  set Timing summary = false
+end
+subsection Mesh
+  set Lower corner = -1, -1, -1
+  set Upper corner = 1, 1, 1
+  set Subdivisions = 2, 2, 2
+end
+subsection Boundary conditions
+  set Dirichlet = 4: 0; 0; 0
+end
+subsection Cracks
+  set Number of cracks = 1
+  subsection Crack 1
+    set Shape = penny
+    set Center = 0, 0, 0.1
+    set Radius = 0.5
+  end
+end
+)";
+
 /// Set up a problem from @p input and print what happened.
 void
 check(const std::string &what, const std::string &input)
@@ -62,13 +87,25 @@ check(const std::string &what, const std::string &input)
     }
 }
 
-/// The valid input with @p from replaced by @p to.
+/// @p input (by default the valid 2D input) with @p from replaced by @p to.
 std::string
-changed(const std::string &from, const std::string &to)
+changed(const std::string &from,
+        const std::string &to,
+        const std::string &input = valid)
 {
-  const auto pos = valid.find(from);
+  const auto pos = input.find(from);
   AssertThrow(pos != std::string::npos, ExcMessage("no '" + from + "'"));
-  return std::string(valid).replace(pos, from.size(), to);
+  return std::string(input).replace(pos, from.size(), to);
+}
+
+/// The valid 2D input with one segment crack given by @p entries.
+std::string
+with_crack(const std::string &entries)
+{
+  return valid +
+         "subsection Cracks\n  set Number of cracks = 1\n"
+         "  subsection Crack 1\n" +
+         entries + "\n  end\nend\n";
 }
 
 int
@@ -130,6 +167,27 @@ main(int argc, char **argv)
   check("bad refinement region",
         valid + "subsection Mesh refinement\n  set Strategy = region\n"
                 "  set Region = 0.1 - r\nend\n");
+  check("valid crack (edge crack from the left face)",
+        with_crack("set Start point = -1, 0.5\nset End point = 0.7, 0.5\n"
+                   "set Tips = end"));
+  check("crack outside the body",
+        with_crack("set Start point = 5, 5\nset End point = 6, 5"));
+  check("crack tip outside the body",
+        with_crack("set Start point = -1, 0.5\nset End point = 0.7, 0.5"));
+  check("crack of zero length",
+        with_crack("set Start point = 1, 0.5\nset End point = 1, 0.5"));
+  check("3D shape in 2D", with_crack("set Shape = penny"));
+  check("valid 3D penny", valid_3d);
+  check("segment in 3D",
+        changed("set Shape = penny", "set Shape = segment", valid_3d));
+  check("penny outside the body",
+        changed("set Center = 0, 0, 0.1", "set Center = 0, 0, 3", valid_3d));
+  check("in-plane direction along the normal",
+        changed("set Radius = 0.5",
+                "set Radius = 0.5\nset In-plane direction = 0, 0, 2",
+                valid_3d));
+  check("negative radius",
+        changed("set Radius = 0.5", "set Radius = -0.5", valid_3d));
   check("output directory is a file",
         changed("Output directory = results", "Output directory = a_file"));
 }

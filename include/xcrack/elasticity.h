@@ -14,6 +14,8 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <xcrack/boundary_conditions.h>
+#include <xcrack/crack/crack_set.h>
+#include <xcrack/crack/level_set_fields.h>
 #include <xcrack/linear_solver.h>
 #include <xcrack/material.h>
 #include <xcrack/mesh.h>
@@ -61,6 +63,8 @@ namespace xcrack
 
   private:
     void
+    update_level_sets();
+    void
     setup_system();
     void
     assemble_system();
@@ -89,12 +93,14 @@ namespace xcrack
     LinearSolver                   linear_solver;
     unsigned int                   degree = 1;
     std::unique_ptr<Function<dim>> exact_solution;
+    CrackSet<dim>                  cracks;
 
     parallel::distributed::Triangulation<dim> triangulation;
     hp::FECollection<dim>                     fe_collection;
     hp::QCollection<dim>                      quadrature_collection;
     hp::QCollection<dim - 1>                  face_quadrature_collection;
     DoFHandler<dim>                           dof_handler;
+    LevelSetFields<dim>                       level_sets;
 
     IndexSet                       locally_owned_dofs;
     IndexSet                       locally_relevant_dofs;

@@ -63,6 +63,7 @@ namespace xcrack
                     typename Triangulation<dim>::MeshSmoothing(
                       Triangulation<dim>::smoothing_on_refinement |
                       Triangulation<dim>::smoothing_on_coarsening))
+    , level_sets(triangulation)
   {
     run_parameters.parse_parameters(prm);
     check_input(run_parameters.dimension == dim,
@@ -83,6 +84,7 @@ namespace xcrack
       }
     boundary_conditions.parse_parameters(prm, constants);
     refinement.parse_parameters(prm, constants);
+    cracks.parse_parameters(prm);
 
     prm.enter_subsection("Discretization");
     degree = prm.get_integer("Degree");
@@ -96,6 +98,7 @@ namespace xcrack
 
     mesh_description.create(triangulation);
     boundary_conditions.check_against(triangulation);
+    cracks.check_against(triangulation);
     check_input(!boundary_conditions.dirichlet.empty(),
                 "Boundary conditions/Dirichlet is empty: without any "
                 "prescribed displacement the rigid body motions are free and "
@@ -162,6 +165,18 @@ namespace xcrack
     solution.reinit(locally_owned_dofs,
                     locally_relevant_dofs,
                     mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticityProblem<dim>::update_level_sets()
+  {
+    if (cracks.size() == 0)
+      return;
+    TimerOutput::Scope t(*timer, "levelset");
+    level_sets.update(cracks);
   }
 
 
@@ -402,6 +417,17 @@ namespace xcrack
     Vector<float> subdomain(triangulation.n_active_cells());
     subdomain = triangulation.locally_owned_subdomain();
     data_out.add_data_vector(subdomain, "subdomain");
+    for (unsigned int i = 0; i < cracks.size(); ++i)
+      {
+        const std::string suffix =
+          (cracks.size() > 1 ? std::to_string(i + 1) : "");
+        data_out.add_data_vector(level_sets.get_dof_handler(),
+                                 level_sets.lsn(i),
+                                 "lsn" + suffix);
+        data_out.add_data_vector(level_sets.get_dof_handler(),
+                                 level_sets.lst(i),
+                                 "lst" + suffix);
+      }
     data_out.build_patches(degree);
 
     const std::string  dir  = run_parameters.output_directory + "/";
@@ -482,6 +508,12 @@ namespace xcrack
 
     pcout << "xcrack: " << dim << "D linear elasticity, Q" << degree
           << " elements, " << linear_solver.type << " solver" << std::endl;
+    if (cracks.size() > 0)
+      pcout << "Note: the X-FEM enrichment is not implemented yet. The "
+            << cracks.size()
+            << " crack(s) are written as level sets (lsn, lst) but do not "
+               "affect the solution."
+            << std::endl;
 
     std::map<std::string, double> previous_times;
     for (unsigned int cycle = 0; cycle < refinement.n_cycles; ++cycle)
@@ -491,6 +523,7 @@ namespace xcrack
             TimerOutput::Scope t(*timer, "refine");
             refinement.refine(triangulation, dof_handler, solution);
           }
+        update_level_sets();
         setup_system();
         assemble_system();
         const unsigned int iterations = solve();

@@ -1,0 +1,85 @@
+#include <deal.II/base/function.h>
+
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <xcrack/crack/level_set_fields.h>
+
+namespace xcrack
+{
+  template <int dim>
+  LevelSetFields<dim>::LevelSetFields(
+    const parallel::distributed::Triangulation<dim> &triangulation)
+    : fe(1)
+    , dof_handler(triangulation)
+  {}
+
+
+
+  template <int dim>
+  void
+  LevelSetFields<dim>::update(const CrackSet<dim> &cracks)
+  {
+    dof_handler.distribute_dofs(fe);
+    const IndexSet owned = dof_handler.locally_owned_dofs();
+    IndexSet       relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
+
+    normal.resize(cracks.size());
+    tangent.resize(cracks.size());
+    TrilinosWrappers::MPI::Vector distributed(owned, comm);
+    for (unsigned int i = 0; i < cracks.size(); ++i)
+      {
+        const CrackGeometry<dim> &crack = cracks[i];
+        VectorTools::interpolate(dof_handler,
+                                 ScalarFunctionFromFunctionObject<dim>(
+                                   [&](const Point<dim> &p) {
+                                     return crack.lsn(p);
+                                   }),
+                                 distributed);
+        normal[i].reinit(owned, relevant, comm);
+        normal[i] = distributed;
+        VectorTools::interpolate(dof_handler,
+                                 ScalarFunctionFromFunctionObject<dim>(
+                                   [&](const Point<dim> &p) {
+                                     return crack.lst(p);
+                                   }),
+                                 distributed);
+        tangent[i].reinit(owned, relevant, comm);
+        tangent[i] = distributed;
+      }
+  }
+
+
+
+  template <int dim>
+  const DoFHandler<dim> &
+  LevelSetFields<dim>::get_dof_handler() const
+  {
+    return dof_handler;
+  }
+
+
+
+  template <int dim>
+  const TrilinosWrappers::MPI::Vector &
+  LevelSetFields<dim>::lsn(const unsigned int crack) const
+  {
+    return normal[crack];
+  }
+
+
+
+  template <int dim>
+  const TrilinosWrappers::MPI::Vector &
+  LevelSetFields<dim>::lst(const unsigned int crack) const
+  {
+    return tangent[crack];
+  }
+
+
+
+  template class LevelSetFields<2>;
+  template class LevelSetFields<3>;
+} // namespace xcrack
