@@ -159,6 +159,11 @@ main(int argc, char **argv)
         changed("set Subdivisions = 2, 1", "set Subdivisions = 2, 0"));
   check("too few coordinates",
         changed("set Lower corner = 0, 0", "set Lower corner = 0"));
+  check("valid generator (colorized hyper_rectangle)",
+        changed("set Type = box",
+                "set Type = generator\n"
+                "  set Generator name = hyper_rectangle\n"
+                "  set Generator arguments = 0, 0 : 2, 1 : true"));
   check("bad generator arguments",
         changed("set Type = box",
                 "set Type = generator\n"
