@@ -5,6 +5,8 @@
 
 #include <xcrack/linear_solver.h>
 
+#include <stdexcept>
+
 namespace xcrack
 {
   void
@@ -59,7 +61,22 @@ namespace xcrack
           control,
           TrilinosWrappers::SolverDirect::AdditionalData(false,
                                                          "Amesos_Mumps"));
-        solver.solve(matrix, x, rhs);
+        try
+          {
+            solver.solve(matrix, x, rhs);
+          }
+        catch (const std::exception &)
+          {
+            // MUMPS reports a (numerically) singular matrix as an Amesos
+            // error code; say what that means for an xcrack run.
+            throw std::runtime_error(
+              "the direct solver failed: the stiffness matrix is singular. "
+              "Check that the Dirichlet data fix every part of the body. "
+              "With a crack this also happens when it passes exactly "
+              "through mesh nodes or very close to them (the conditioning "
+              "treatment of such cuts is not implemented yet): move the "
+              "crack slightly.");
+          }
         return 1;
       }
 

@@ -7,7 +7,9 @@
 
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/hp/fe_collection.h>
+#include <deal.II/hp/fe_values.h>
 #include <deal.II/hp/q_collection.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -22,6 +24,7 @@
 #include <xcrack/parameters.h>
 #include <xcrack/refinement.h>
 #include <xcrack/statistics.h>
+#include <xcrack/xfem/enrichment.h>
 
 #include <memory>
 
@@ -77,6 +80,24 @@ namespace xcrack
     output_results(const unsigned int cycle);
     void
     print_convergence_table() const;
+    /// The largest displacement component at the vertices of the mesh.
+    double
+    compute_max_displacement() const;
+    /// Enriched DoFs that are not constrained, over all ranks.
+    types::global_dof_index
+    n_free_enriched_dofs() const;
+
+    /**
+     * Reinitialise on @p cell and return the FEValues to integrate with:
+     * @p hp_fe_values for cells integrated by a Gauss rule, or @p split_values
+     * built with the cut-cell rule of @p n_points_1d points per direction and
+     * side for the cells a crack splits.
+     */
+    const FEValues<dim> &
+    reinit_fe_values(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                     hp::FEValues<dim>              &hp_fe_values,
+                     std::unique_ptr<FEValues<dim>> &split_values,
+                     const unsigned int              n_points_1d) const;
 
     MPI_Comm           mpi_communicator;
     ConditionalOStream pcout;
@@ -94,6 +115,9 @@ namespace xcrack
     unsigned int                   degree = 1;
     std::unique_ptr<Function<dim>> exact_solution;
     CrackSet<dim>                  cracks;
+    /// The X-FEM enrichment, when there is a crack. Declared before the
+    /// finite elements and the DoFHandler: they point to its functions.
+    std::unique_ptr<Enrichment<dim>> enrichment;
 
     parallel::distributed::Triangulation<dim> triangulation;
     hp::FECollection<dim>                     fe_collection;
@@ -109,6 +133,9 @@ namespace xcrack
     TrilinosWrappers::MPI::Vector  system_rhs;
     /// Solution with ghost entries, for output, errors and refinement.
     TrilinosWrappers::MPI::Vector solution;
+
+    /// The enriched DoFs (owned and ghost) of the current space.
+    IndexSet enriched_dofs;
 
     Statistics                                  statistics;
     std::vector<std::pair<double, std::string>> pvd_records;

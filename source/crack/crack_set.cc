@@ -98,9 +98,10 @@ namespace xcrack
                             "(end - start) rotated by +90 degrees.");
           prm.declare_entry("Tips",
                             "both",
-                            Patterns::Selection("both|end|start"),
+                            Patterns::Selection("both|end|start|none"),
                             "Segment: which ends are crack tips; the others "
-                            "are mouths on (or beyond) the boundary.");
+                            "are mouths on (or beyond) the boundary; none: "
+                            "the crack splits the body.");
           prm.declare_entry("Center",
                             "0, 0, 0",
                             Patterns::Anything(),
@@ -159,8 +160,11 @@ namespace xcrack
                     name + "Start point and " + name +
                       "End point: the segment has zero length.");
         const std::string tips = prm.get("Tips");
-        cracks.push_back(std::make_unique<SegmentCrack>(
-          start, end, tips != "end", tips != "start"));
+        cracks.push_back(
+          std::make_unique<SegmentCrack>(start,
+                                         end,
+                                         tips == "both" || tips == "start",
+                                         tips == "both" || tips == "end"));
         prm.leave_subsection();
       }
     prm.leave_subsection();
