@@ -107,12 +107,6 @@ namespace xcrack
     check_input(cracks.size() <= 1,
                 "Cracks/Number of cracks = " + std::to_string(cracks.size()) +
                   ": the X-FEM enrichment handles one crack for now.");
-    check_input(cracks.size() == 0 ||
-                  Utilities::MPI::n_mpi_processes(mpi_communicator) == 1,
-                "Cracks/Number of cracks = " + std::to_string(cracks.size()) +
-                  ": the X-FEM enrichment runs on one MPI rank for now (its "
-                  "classification of hanging vertices is not yet exchanged "
-                  "between ranks); run without mpirun.");
     if (cracks.size() == 1)
       {
         enrichment = std::make_unique<Enrichment<dim>>(cracks[0], degree);

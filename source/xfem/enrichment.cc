@@ -1,10 +1,12 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/quadrature_lib.h>
 
+#include <deal.II/distributed/tria_base.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_enriched.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/hp/q_collection.h>
 #include <deal.II/non_matching/quadrature_generator.h>
 
@@ -115,6 +117,42 @@ namespace xcrack
 
 
 
+  namespace
+  {
+    /**
+     * OR the per-vertex @p flags that the owners of the ghost cells computed
+     * into ours. A rank sees every cell around the vertices of its own
+     * cells, so owners know their vertices' flags completely; a ghost cell's
+     * vertex may have neighbours that only its owner sees.
+     */
+    template <int dim>
+    void
+    import_ghost_vertex_flags(const Triangulation<dim> &tria,
+                              std::vector<bool>        &flags)
+    {
+      if (dynamic_cast<const parallel::TriangulationBase<dim> *>(&tria) ==
+          nullptr)
+        return;
+      using Iterator = typename Triangulation<dim>::active_cell_iterator;
+      GridTools::exchange_cell_data_to_ghosts<std::vector<bool>,
+                                              Triangulation<dim>>(
+        tria,
+        [&](const Iterator &cell) {
+          std::vector<bool> values;
+          for (const unsigned int v : cell->vertex_indices())
+            values.push_back(flags[cell->vertex_index(v)]);
+          return std_cxx17::optional<std::vector<bool>>(values);
+        },
+        [&](const Iterator &cell, const std::vector<bool> &values) {
+          for (const unsigned int v : cell->vertex_indices())
+            if (values[v])
+              flags[cell->vertex_index(v)] = true;
+        });
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   Enrichment<dim>::set_fe_indices(DoFHandler<dim> &dof_handler)
@@ -150,6 +188,9 @@ namespace xcrack
               true;
         }
 
+    import_ghost_vertex_flags(tria, touches_split);
+    import_ghost_vertex_flags(tria, touches_tip);
+
     // A coarse vertex whose hanging neighbour (the midpoint of a refined
     // line, or a vertex inside a refined face) touches a split cell has a
     // function that reaches into that cell through the hanging-node
@@ -183,19 +224,21 @@ namespace xcrack
               for (const auto &face : cell->face_iterators())
                 if (face->has_children())
                   {
-                    std::vector<unsigned int> hanging;
-                    for (unsigned int c = 0; c < face->n_children(); ++c)
-                      for (const unsigned int v :
-                           face->child(c)->vertex_indices())
-                        hanging.push_back(face->child(c)->vertex_index(v));
-                    pull(face, hanging);
+                    // The centre of an isotropically refined quad (vertex
+                    // 3 of child 0) depends on all four corners; the
+                    // midpoints of its lines are handled with the lines.
+                    pull(face,
+                         std::vector<unsigned int>{
+                           face->child(0)->vertex_index(3)});
                   }
           }
 
     // The vertices whose shape functions are enriched.
-    std::vector<bool> enriched(tria.n_vertices(), false);
+    std::vector<bool> &enriched = enriched_vertex;
+    enriched.assign(tria.n_vertices(), false);
     for (unsigned int v = 0; v < tria.n_vertices(); ++v)
       enriched[v] = touches_split[v] && !touches_tip[v];
+    import_ghost_vertex_flags(tria, enriched);
 
     // A hanging vertex takes its values from the vertices of the coarse
     // line or face it lies on: where one of those is enriched, so is the
@@ -333,9 +376,21 @@ namespace xcrack
           for (unsigned int i = 0; i < dofs.size(); ++i)
             if (is_enriched_dof(cell->get_fe(), i))
               {
-                const auto &s = support[dofs[i]];
-                if ((!s.first || s.second) &&
-                    !constraints.is_constrained(dofs[i]))
+                // Vertex DoFs follow the vertex flags, which are complete on
+                // every rank; the others the support of their function.
+                const FiniteElement<dim> &fe = cell->get_fe();
+                const unsigned int        n_vertex_dofs =
+                  fe.n_dofs_per_vertex() * cell->n_vertices();
+                bool keep;
+                if (i < n_vertex_dofs)
+                  keep = enriched_vertex[cell->vertex_index(
+                    i / fe.n_dofs_per_vertex())];
+                else
+                  {
+                    const auto &s = support[dofs[i]];
+                    keep          = s.first && !s.second;
+                  }
+                if (!keep && !constraints.is_constrained(dofs[i]))
                   constraints.add_line(dofs[i]);
               }
         }

@@ -135,10 +135,13 @@ namespace xcrack
       tip
     };
 
-    const CrackGeometry<dim>                       &crack;
-    HeavisideFunction<dim>                          heaviside_function;
-    hp::FECollection<dim>                           fe_collection;
-    std::vector<CellKind>                           cell_kind;
+    const CrackGeometry<dim> &crack;
+    HeavisideFunction<dim>    heaviside_function;
+    hp::FECollection<dim>     fe_collection;
+    std::vector<CellKind>     cell_kind;
+    /// Whether the functions of each vertex are enriched (vertices of the
+    /// owned and ghost cells).
+    std::vector<bool>                               enriched_vertex;
     mutable std::map<unsigned int, Quadrature<dim>> split_rules;
   };
 } // namespace xcrack
