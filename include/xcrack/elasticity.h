@@ -49,7 +49,7 @@ namespace xcrack
   class ElasticityProblem
   {
   public:
-    /// Declare `subsection Discretization` and `subsection Exact solution`.
+    /// Declare `subsection Discretization`, `Enrichment` and `Exact solution`.
     static void
     declare_parameters(ParameterHandler &prm);
 

@@ -38,6 +38,20 @@ namespace xcrack
     }
     prm.leave_subsection();
 
+    prm.enter_subsection("Enrichment");
+    {
+      prm.declare_entry(
+        "Heaviside volume tolerance",
+        "1e-9",
+        Patterns::Double(0, 0.5),
+        "A node is not enriched by the crack's jump when the smaller side of "
+        "its support holds less than this fraction of the support's volume: "
+        "such a barely cut support makes the matrix nearly singular, and "
+        "dropping it costs an error of the order of the square root of the "
+        "fraction. 0 keeps every cut support.");
+    }
+    prm.leave_subsection();
+
     prm.enter_subsection("Exact solution");
     {
       prm.declare_entry("Displacement",
@@ -109,7 +123,13 @@ namespace xcrack
                   ": the X-FEM enrichment handles one crack for now.");
     if (cracks.size() == 1)
       {
-        enrichment = std::make_unique<Enrichment<dim>>(cracks[0], degree);
+        prm.enter_subsection("Enrichment");
+        const double volume_tolerance =
+          prm.get_double("Heaviside volume tolerance");
+        prm.leave_subsection();
+        enrichment = std::make_unique<Enrichment<dim>>(cracks[0],
+                                                       degree,
+                                                       volume_tolerance);
         for (const auto &fe : enrichment->get_fe_collection())
           fe_collection.push_back(fe);
       }

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <numeric>
 
 namespace xcrack
 {
@@ -28,7 +29,7 @@ namespace xcrack
   double
   HeavisideFunction<dim>::value(const Point<dim> &p, const unsigned int) const
   {
-    return (crack.lsn(p) > 0 ? 1. : -1.);
+    return (crack.lsn(p) >= 0 ? 1. : -1.);
   }
 
 
@@ -88,14 +89,53 @@ namespace xcrack
       const FE_Q<dim>     q1{1};
       std::vector<double> vertex_values;
     };
+
+    /**
+     * The rule of a cell cut by the zero set of the Q1 interpolant of
+     * @p vertex_values (reference coordinates): Gauss rules of
+     * @p n_points_1d points per direction on each side, joined. Also
+     * returns the reference volume of the negative side.
+     */
+    template <int dim>
+    std::pair<Quadrature<dim>, double>
+    cut_cell_rule(const std::vector<double> &vertex_values,
+                  const unsigned int         n_points_1d)
+    {
+      const ReferenceCellLevelSet<dim>      level_set(vertex_values);
+      const hp::QCollection<1>              q1d(QGauss<1>{n_points_1d});
+      NonMatching::QuadratureGenerator<dim> generator(q1d);
+      Point<dim>                            upper;
+      for (unsigned int d = 0; d < dim; ++d)
+        upper[d] = 1;
+      generator.generate(level_set,
+                         BoundingBox<dim>(std::make_pair(Point<dim>(), upper)));
+
+      std::vector<Point<dim>> points;
+      std::vector<double>     weights;
+      for (const Quadrature<dim> *side : {&generator.get_inside_quadrature(),
+                                          &generator.get_outside_quadrature()})
+        {
+          points.insert(points.end(),
+                        side->get_points().begin(),
+                        side->get_points().end());
+          weights.insert(weights.end(),
+                         side->get_weights().begin(),
+                         side->get_weights().end());
+        }
+      const auto &inside = generator.get_inside_quadrature().get_weights();
+      return {Quadrature<dim>(points, weights),
+              std::accumulate(inside.begin(), inside.end(), 0.)};
+    }
   } // namespace
 
 
 
   template <int dim>
   Enrichment<dim>::Enrichment(const CrackGeometry<dim> &crack,
-                              const unsigned int        degree)
+                              const unsigned int        degree,
+                              const double              volume_tolerance)
     : crack(crack)
+    , volume_tolerance(volume_tolerance)
     , heaviside_function(crack)
   {
     fe_collection.push_back(
@@ -120,15 +160,17 @@ namespace xcrack
   namespace
   {
     /**
-     * OR the per-vertex @p flags that the owners of the ghost cells computed
-     * into ours. A rank sees every cell around the vertices of its own
-     * cells, so owners know their vertices' flags completely; a ghost cell's
-     * vertex may have neighbours that only its owner sees.
+     * OR (or, with @p overwrite, copy) the per-vertex @p flags that the
+     * owners of the ghost cells computed into ours. A rank sees every cell
+     * around the vertices of its own cells, so owners know their vertices'
+     * flags completely; a ghost cell's vertex may have neighbours that only its
+     * owner sees.
      */
     template <int dim>
     void
     import_ghost_vertex_flags(const Triangulation<dim> &tria,
-                              std::vector<bool>        &flags)
+                              std::vector<bool>        &flags,
+                              const bool                overwrite = false)
     {
       if (dynamic_cast<const parallel::TriangulationBase<dim> *>(&tria) ==
           nullptr)
@@ -145,7 +187,9 @@ namespace xcrack
         },
         [&](const Iterator &cell, const std::vector<bool> &values) {
           for (const unsigned int v : cell->vertex_indices())
-            if (values[v])
+            if (overwrite)
+              flags[cell->vertex_index(v)] = values[v];
+            else if (values[v])
               flags[cell->vertex_index(v)] = true;
         });
     }
@@ -163,6 +207,11 @@ namespace xcrack
 
     std::vector<bool> touches_split(tria.n_vertices(), false);
     std::vector<bool> touches_tip(tria.n_vertices(), false);
+    // Volume of the support of each vertex's function on each side of the
+    // crack, and whether a cell the crack splits touches it directly.
+    std::vector<double> volume_plus(tria.n_vertices(), 0.);
+    std::vector<double> volume_minus(tria.n_vertices(), 0.);
+    std::vector<bool>   directly_split(tria.n_vertices(), false);
     for (const auto &cell : tria.active_cell_iterators())
       if (!cell->is_artificial())
         {
@@ -178,14 +227,40 @@ namespace xcrack
               min_lst        = std::min(min_lst, t);
               max_lst        = std::max(max_lst, t);
             }
-          if (!(min_lsn < 0 && max_lsn > 0) || min_lst >= 0)
-            continue;
+          // lsn = 0 counts as the positive side (as H(0) = +1 does): a crack
+          // through a row of nodes then splits the cells on its negative
+          // side, along their faces.
+          const bool cut = (min_lsn < 0 && max_lsn >= 0);
+          if (!cut || min_lst >= 0)
+            {
+              // Not on the crack: the whole cell lies on one side of it.
+              const double cell_side = crack.lsn(cell->center());
+              for (const unsigned int v : cell->vertex_indices())
+                (cell_side >= 0 ? volume_plus :
+                                  volume_minus)[cell->vertex_index(v)] +=
+                  cell->measure();
+              continue;
+            }
           const CellKind kind = (max_lst < 0 ? CellKind::split : CellKind::tip);
           cell_kind[cell->active_cell_index()] = kind;
+          double fraction_minus                = 0.5;
+          if (kind == CellKind::split)
+            {
+              std::vector<double> values;
+              for (const unsigned int v : cell->vertex_indices())
+                values.push_back(crack.lsn(cell->vertex(v)));
+              fraction_minus = cut_cell_rule<dim>(values, 2).second;
+            }
           for (const unsigned int v : cell->vertex_indices())
-            (kind == CellKind::split ? touches_split :
-                                       touches_tip)[cell->vertex_index(v)] =
-              true;
+            {
+              const unsigned int index = cell->vertex_index(v);
+              (kind == CellKind::split ? touches_split : touches_tip)[index] =
+                true;
+              directly_split[index] =
+                directly_split[index] || kind == CellKind::split;
+              volume_minus[index] += fraction_minus * cell->measure();
+              volume_plus[index] += (1 - fraction_minus) * cell->measure();
+            }
         }
 
     import_ghost_vertex_flags(tria, touches_split);
@@ -237,8 +312,20 @@ namespace xcrack
     std::vector<bool> &enriched = enriched_vertex;
     enriched.assign(tria.n_vertices(), false);
     for (unsigned int v = 0; v < tria.n_vertices(); ++v)
-      enriched[v] = touches_split[v] && !touches_tip[v];
-    import_ghost_vertex_flags(tria, enriched);
+      {
+        enriched[v] = touches_split[v] && !touches_tip[v];
+        // A support the crack barely cuts gives a function that is almost a
+        // copy of the standard one, and a nearly singular matrix: drop it.
+        // (A vertex that only reaches split cells through hanging-node
+        // constraints has no split cell of its own; it is kept.)
+        const double total = volume_plus[v] + volume_minus[v];
+        if (enriched[v] && directly_split[v] &&
+            std::min(volume_plus[v], volume_minus[v]) <
+              volume_tolerance * total)
+          enriched[v] = false;
+      }
+    // The owners of the ghost cells see their vertices' full supports.
+    import_ghost_vertex_flags(tria, enriched, /*overwrite=*/true);
 
     // A hanging vertex takes its values from the vertices of the coarse
     // line or face it lies on: where one of those is enriched, so is the
@@ -414,29 +501,8 @@ namespace xcrack
     std::vector<double> values;
     for (const unsigned int v : cell->vertex_indices())
       values.push_back(crack.lsn(cell->vertex(v)));
-    const ReferenceCellLevelSet<dim> level_set(values);
-
-    const hp::QCollection<1>              q1d(QGauss<1>{n_points_1d});
-    NonMatching::QuadratureGenerator<dim> generator(q1d);
-    Point<dim>                            upper;
-    for (unsigned int d = 0; d < dim; ++d)
-      upper[d] = 1;
-    generator.generate(level_set,
-                       BoundingBox<dim>(std::make_pair(Point<dim>(), upper)));
-
-    std::vector<Point<dim>> points;
-    std::vector<double>     weights;
-    for (const Quadrature<dim> *side : {&generator.get_inside_quadrature(),
-                                        &generator.get_outside_quadrature()})
-      {
-        points.insert(points.end(),
-                      side->get_points().begin(),
-                      side->get_points().end());
-        weights.insert(weights.end(),
-                       side->get_weights().begin(),
-                       side->get_weights().end());
-      }
-    return split_rules.emplace(key, Quadrature<dim>(points, weights))
+    return split_rules
+      .emplace(key, cut_cell_rule<dim>(values, n_points_1d).first)
       .first->second;
   }
 

@@ -20,8 +20,9 @@ namespace xcrack
 
   /**
    * The jump function of a crack, H = sign(lsn): +1 on the side the normal
-   * points to, -1 on the other. Its gradient vanishes away from the crack,
-   * which is all FE_Enriched needs (quadrature points never lie on it).
+   * points to (and on the crack, lsn = 0), -1 on the other. Its gradient
+   * vanishes away from the crack, which is all FE_Enriched needs (quadrature
+   * points never lie on it).
    */
   template <int dim>
   class HeavisideFunction : public Function<dim>
@@ -81,9 +82,16 @@ namespace xcrack
     static constexpr unsigned int plain     = 0;
     static constexpr unsigned int heaviside = 1;
 
-    /// Enrich the displacement space of degree @p degree by the jump of
-    /// @p crack.
-    Enrichment(const CrackGeometry<dim> &crack, const unsigned int degree);
+    /**
+     * Enrich the displacement space of degree @p degree by the jump of
+     * @p crack. A vertex is not enriched when the smaller side of its
+     * support, cut by the crack, holds less than @p volume_tolerance of the
+     * support's volume (the cut is too close to the vertex: its enriched
+     * function would nearly copy the standard one).
+     */
+    Enrichment(const CrackGeometry<dim> &crack,
+               const unsigned int        degree,
+               const double              volume_tolerance);
 
     const hp::FECollection<dim> &
     get_fe_collection() const;
@@ -136,6 +144,7 @@ namespace xcrack
     };
 
     const CrackGeometry<dim> &crack;
+    const double              volume_tolerance;
     HeavisideFunction<dim>    heaviside_function;
     hp::FECollection<dim>     fe_collection;
     std::vector<CellKind>     cell_kind;
