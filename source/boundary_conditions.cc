@@ -79,8 +79,10 @@ namespace xcrack
 
   template <int dim>
   void
-  BoundaryConditions<dim>::parse_parameters(ParameterHandler        &prm,
-                                            const FunctionConstants &constants)
+  BoundaryConditions<dim>::parse_parameters(
+    ParameterHandler                     &prm,
+    const FunctionConstants              &constants,
+    const std::shared_ptr<Function<dim>> &exact_solution)
   {
     prm.enter_subsection("Boundary conditions");
     const std::string dirichlet_text  = prm.get("Dirichlet");
@@ -97,11 +99,20 @@ namespace xcrack
     for (const auto &[id, expr] :
          parse_id_map(dirichlet_text, section + "Dirichlet"))
       {
-        dirichlet[id] = std::make_unique<ParsedVectorFunction<dim>>(
-          expr,
-          dim,
-          constants,
-          section + "Dirichlet (boundary " + std::to_string(id) + ")");
+        if (expr == "exact")
+          {
+            check_input(exact_solution != nullptr,
+                        section + "Dirichlet: boundary " + std::to_string(id) +
+                          " takes the exact solution, but the file gives "
+                          "none (subsection Exact solution).");
+            dirichlet[id] = exact_solution;
+          }
+        else
+          dirichlet[id] = std::make_shared<ParsedVectorFunction<dim>>(
+            expr,
+            dim,
+            constants,
+            section + "Dirichlet (boundary " + std::to_string(id) + ")");
         dirichlet_mask[id] = ComponentMask(dim, true);
       }
 

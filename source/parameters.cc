@@ -1,6 +1,7 @@
 #include <xcrack/boundary_conditions.h>
 #include <xcrack/crack/crack_set.h>
 #include <xcrack/elasticity.h>
+#include <xcrack/exact_solution.h>
 #include <xcrack/input_error.h>
 #include <xcrack/linear_solver.h>
 #include <xcrack/material.h>
@@ -101,6 +102,7 @@ namespace xcrack
     CrackSet<3>::declare_parameters(prm);
     LinearSolver::declare_parameters(prm);
     ElasticityProblem<3>::declare_parameters(prm);
+    ExactSolution::declare_parameters(prm);
   }
 
 

@@ -29,7 +29,8 @@ namespace xcrack
    * `Dirichlet components` restricts the prescribed components of a boundary
    * (letters among x, y, z): a roller is `2: y`. Expressions may use x, y, z,
    * pi, the material constants E, nu, mu, lambda and the `Function
-   * constants` of the file.
+   * constants` of the file. `id: exact` takes the values of the exact
+   * solution (`subsection Exact solution`).
    */
   template <int dim>
   class BoundaryConditions
@@ -38,9 +39,14 @@ namespace xcrack
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /// Parse the entries into functions; throws InputError naming the entry.
+    /**
+     * Parse the entries into functions; throws InputError naming the entry.
+     * A Dirichlet item whose value is `exact` takes @p exact_solution.
+     */
     void
-    parse_parameters(ParameterHandler &prm, const FunctionConstants &constants);
+    parse_parameters(ParameterHandler                     &prm,
+                     const FunctionConstants              &constants,
+                     const std::shared_ptr<Function<dim>> &exact_solution);
 
     /**
      * Check the boundary ids against those of @p triangulation: every id
@@ -50,7 +56,7 @@ namespace xcrack
     void
     check_against(const Triangulation<dim> &triangulation) const;
 
-    std::map<types::boundary_id, std::unique_ptr<Function<dim>>> dirichlet;
+    std::map<types::boundary_id, std::shared_ptr<Function<dim>>> dirichlet;
     std::map<types::boundary_id, ComponentMask>                  dirichlet_mask;
     std::map<types::boundary_id, std::unique_ptr<Function<dim>>> neumann;
     std::unique_ptr<Function<dim>>                               body_force;

@@ -49,7 +49,7 @@ namespace xcrack
   class ElasticityProblem
   {
   public:
-    /// Declare `subsection Discretization`, `Enrichment` and `Exact solution`.
+    /// Declare `subsection Discretization` and `Enrichment`.
     static void
     declare_parameters(ParameterHandler &prm);
 
@@ -69,6 +69,9 @@ namespace xcrack
     update_level_sets();
     void
     setup_system();
+    /// Dirichlet constraints, aware of enriched DoFs on the boundary.
+    void
+    make_dirichlet_constraints();
     void
     assemble_system();
     unsigned int
@@ -113,7 +116,7 @@ namespace xcrack
     Refinement<dim>                refinement;
     LinearSolver                   linear_solver;
     unsigned int                   degree = 1;
-    std::unique_ptr<Function<dim>> exact_solution;
+    std::shared_ptr<Function<dim>> exact_solution;
     CrackSet<dim>                  cracks;
     /// The X-FEM enrichment, when there is a crack. Declared before the
     /// finite elements and the DoFHandler: they point to its functions.

@@ -15,6 +15,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <xcrack/elasticity.h>
+#include <xcrack/exact_solution.h>
 #include <xcrack/input_error.h>
 #include <xcrack/output.h>
 
@@ -51,18 +52,6 @@ namespace xcrack
         "fraction. 0 keeps every cut support.");
     }
     prm.leave_subsection();
-
-    prm.enter_subsection("Exact solution");
-    {
-      prm.declare_entry("Displacement",
-                        "",
-                        Patterns::Anything(),
-                        "Exact displacement 'ux; uy[; uz]' if known (for "
-                        "verification): L2_error and energy_error are then "
-                        "computed, relative to the norms of the exact "
-                        "solution. Empty if unknown.");
-    }
-    prm.leave_subsection();
   }
 
 
@@ -96,19 +85,15 @@ namespace xcrack
                       "' is a reserved name (E, nu, mu, lambda, pi).");
         constants[name] = value;
       }
-    boundary_conditions.parse_parameters(prm, constants);
+    exact_solution = ExactSolution::create<dim>(prm, constants, material);
+    boundary_conditions.parse_parameters(prm, constants, exact_solution);
     refinement.parse_parameters(prm, constants);
     cracks.parse_parameters(prm);
 
     prm.enter_subsection("Discretization");
     degree = prm.get_integer("Degree");
     prm.leave_subsection();
-    prm.enter_subsection("Exact solution");
-    const std::string exact = prm.get("Displacement");
-    prm.leave_subsection();
-    if (!Utilities::trim(exact).empty())
-      exact_solution = std::make_unique<ParsedVectorFunction<dim>>(
-        exact, dim, constants, "Exact solution/Displacement");
+
 
     mesh_description.create(triangulation);
     boundary_conditions.check_against(triangulation);
@@ -179,37 +164,7 @@ namespace xcrack
     if (enrichment)
       enrichment->make_constraints(dof_handler, constraints);
 
-    // Dirichlet data constrain the standard DoFs only: interpolation would
-    // treat enriched DoFs as nodal values, which they are not. Only the DoFs
-    // of owned cells need constraints, and only for them is the enrichment
-    // known completely (their supports are owned or ghost cells).
-    IndexSet locally_active_dofs;
-    DoFTools::extract_locally_active_dofs(dof_handler, locally_active_dofs);
-    for (const auto &[id, function] : boundary_conditions.dirichlet)
-      {
-        std::map<types::global_dof_index, double> values;
-        VectorTools::interpolate_boundary_values(
-          dof_handler,
-          id,
-          *function,
-          values,
-          boundary_conditions.dirichlet_mask.at(id));
-        for (const auto &[dof, value] : values)
-          {
-            if (constraints.is_constrained(dof) ||
-                !locally_active_dofs.is_element(dof))
-              continue;
-            check_input(!enriched_dofs.is_element(dof),
-                        "Boundary conditions/Dirichlet: the crack reaches "
-                        "boundary " +
-                          std::to_string(id) +
-                          ", which has prescribed displacements; a crack "
-                          "mouth on a Dirichlet boundary is not supported "
-                          "yet.");
-            constraints.add_line(dof);
-            constraints.set_inhomogeneity(dof, value);
-          }
-      }
+    make_dirichlet_constraints();
     constraints.close();
 
     DynamicSparsityPattern dsp(locally_relevant_dofs);
@@ -238,6 +193,148 @@ namespace xcrack
       return;
     TimerOutput::Scope t(*timer, "levelset");
     level_sets.update(cracks);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticityProblem<dim>::make_dirichlet_constraints()
+  {
+    // Only the DoFs of owned cells need constraints, and only for them is
+    // the enrichment known completely (their supports are owned or ghost).
+    IndexSet locally_active_dofs;
+    DoFTools::extract_locally_active_dofs(dof_handler, locally_active_dofs);
+
+    // Interpolation treats enriched DoFs as nodal values, which they are
+    // not: with unshifted enrichment the trace of u_h at a vertex is
+    // s + H a (standard and enriched DoF, H the side of the face). So where
+    // a Dirichlet vertex carries a free enriched DoF we prescribe s + H a
+    // per face side: s = g - H a if all its Dirichlet faces lie on one side
+    // of the crack, and s = (g+ + g-)/2, a = (g+ - g-)/2 at a crack mouth,
+    // where the data take both branches.
+    struct Pair
+    {
+      types::global_dof_index enriched = numbers::invalid_dof_index;
+      std::map<int, double>   value_on_side; // H -> g
+    };
+    std::map<types::global_dof_index, Pair> pairs; // by standard DoF
+    if (enrichment)
+      {
+        std::vector<types::global_dof_index> dofs;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (!cell->is_artificial() &&
+              cell->active_fe_index() == Enrichment<dim>::heaviside)
+            for (const auto &face : cell->face_iterators())
+              {
+                if (!face->at_boundary())
+                  continue;
+                const auto bc =
+                  boundary_conditions.dirichlet.find(face->boundary_id());
+                if (bc == boundary_conditions.dirichlet.end())
+                  continue;
+                const ComponentMask &mask =
+                  boundary_conditions.dirichlet_mask.at(face->boundary_id());
+                const FiniteElement<dim> &fe = cell->get_fe();
+                dofs.resize(fe.n_dofs_per_cell());
+                cell->get_dof_indices(dofs);
+                const int side = (cracks[0].lsn(face->center()) >= 0 ? 1 : -1);
+                for (const unsigned int fv : face->vertex_indices())
+                  for (const unsigned int v : cell->vertex_indices())
+                    if (cell->vertex_index(v) == face->vertex_index(fv))
+                      {
+                        // The boundary value of this face's side at the
+                        // vertex: evaluate just inside the face.
+                        const Point<dim> x =
+                          face->vertex(fv) +
+                          1e-10 * (face->center() - face->vertex(fv));
+                        Vector<double> g(dim);
+                        bc->second->vector_value(x, g);
+                        const unsigned int per_vertex = fe.n_dofs_per_vertex();
+                        for (unsigned int i = v * per_vertex;
+                             i < (v + 1) * per_vertex;
+                             ++i)
+                          {
+                            const unsigned int c =
+                              fe.system_to_component_index(i).first;
+                            if (!mask[c] ||
+                                Enrichment<dim>::is_enriched_dof(fe, i))
+                              continue;
+                            for (unsigned int j = v * per_vertex;
+                                 j < (v + 1) * per_vertex;
+                                 ++j)
+                              if (Enrichment<dim>::is_enriched_dof(fe, j) &&
+                                  fe.system_to_component_index(j).first == c)
+                                {
+                                  Pair &pair               = pairs[dofs[i]];
+                                  pair.enriched            = dofs[j];
+                                  pair.value_on_side[side] = g[c];
+                                }
+                          }
+                      }
+              }
+      }
+
+    for (const auto &[id, function] : boundary_conditions.dirichlet)
+      {
+        std::map<types::global_dof_index, double> values;
+        VectorTools::interpolate_boundary_values(
+          dof_handler,
+          id,
+          *function,
+          values,
+          boundary_conditions.dirichlet_mask.at(id));
+        for (const auto &[dof, value] : values)
+          {
+            if (constraints.is_constrained(dof) ||
+                !locally_active_dofs.is_element(dof))
+              continue;
+            if (enriched_dofs.is_element(dof))
+              {
+                // Enriched vertex DoFs are handled with their standard
+                // partner; others (Q2 edges) are not supported yet.
+                bool has_partner = false;
+                for (const auto &p : pairs)
+                  has_partner = has_partner || p.second.enriched == dof;
+                check_input(has_partner,
+                            "Boundary conditions/Dirichlet: the crack reaches "
+                            "boundary " +
+                              std::to_string(id) +
+                              ", which has prescribed displacements; with "
+                              "degree 2 this is not supported yet.");
+                continue;
+              }
+            const auto pair = pairs.find(dof);
+            if (pair == pairs.end() ||
+                constraints.is_constrained(pair->second.enriched))
+              {
+                constraints.add_line(dof);
+                constraints.set_inhomogeneity(dof, value);
+                continue;
+              }
+            const auto                   &sides = pair->second.value_on_side;
+            const types::global_dof_index a     = pair->second.enriched;
+            if (sides.size() == 1)
+              {
+                const int    H = sides.begin()->first;
+                const double g = sides.begin()->second;
+                constraints.add_line(dof);
+                constraints.add_entry(dof, a, -H);
+                constraints.set_inhomogeneity(dof, g);
+              }
+            else
+              {
+                const double g_plus = sides.at(1), g_minus = sides.at(-1);
+                constraints.add_line(dof);
+                constraints.set_inhomogeneity(dof, 0.5 * (g_plus + g_minus));
+                if (!constraints.is_constrained(a))
+                  {
+                    constraints.add_line(a);
+                    constraints.set_inhomogeneity(a, 0.5 * (g_plus - g_minus));
+                  }
+              }
+          }
+      }
   }
 
 

@@ -1,0 +1,42 @@
+#ifndef xcrack_exact_solution_h
+#define xcrack_exact_solution_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <xcrack/material.h>
+#include <xcrack/parsed_function.h>
+
+#include <memory>
+
+namespace xcrack
+{
+  using namespace dealii;
+
+  /**
+   * A known displacement field for verification (`subsection Exact
+   * solution`): with one, every solve reports relative L2 and energy errors,
+   * and Dirichlet data may be given as `exact` to take the boundary values
+   * from it.
+   *
+   * - `parsed`: the expressions of `Displacement` (none if empty);
+   * - `williams`: the crack-tip field of BENCHMARKS.md Case 1 with the given
+   *   `Stress intensity factors` (K_I, K_II, K_III) at `Tip`, with e1 =
+   *   `Tip direction` and e2 = `Crack normal`, for the material of the run.
+   */
+  class ExactSolution
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// The exact solution the file describes, or nullptr for none.
+    template <int dim>
+    static std::shared_ptr<Function<dim>>
+    create(ParameterHandler        &prm,
+           const FunctionConstants &constants,
+           const Material          &material);
+  };
+} // namespace xcrack
+
+#endif
