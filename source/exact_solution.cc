@@ -46,34 +46,6 @@ namespace xcrack
 
 
 
-  namespace
-  {
-    std::vector<double>
-    numbers_of(const std::string &text,
-               const unsigned int n,
-               const std::string &entry)
-    {
-      const auto parts = split_and_trim(text, ',');
-      check_input(parts.size() >= n,
-                  entry + " = '" + text + "': expected " + std::to_string(n) +
-                    " numbers.");
-      std::vector<double> values;
-      for (unsigned int i = 0; i < n; ++i)
-        try
-          {
-            values.push_back(Utilities::string_to_double(parts[i]));
-          }
-        catch (...)
-          {
-            throw InputError(entry + " = '" + text + "': '" + parts[i] +
-                             "' is not a number.");
-          }
-      return values;
-    }
-  } // namespace
-
-
-
   template <int dim>
   std::shared_ptr<Function<dim>>
   ExactSolution::create(ParameterHandler        &prm,
@@ -99,7 +71,7 @@ namespace xcrack
       }
 
     const std::vector<double> k =
-      numbers_of(sif, 3, section + "Stress intensity factors");
+      parse_numbers(sif, 3, section + "Stress intensity factors");
     WilliamsField field;
     field.k_I   = k[0];
     field.k_II  = k[1];
@@ -107,17 +79,11 @@ namespace xcrack
     field.mu    = material.mu();
     field.kappa = material.kappa(dim);
 
-    Point<dim>     p;
-    Tensor<1, dim> e1, e2;
-    const auto     t = numbers_of(tip, dim, section + "Tip");
-    const auto     a = numbers_of(direction, dim, section + "Tip direction");
-    const auto     b = numbers_of(normal, dim, section + "Crack normal");
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        p[d]  = t[d];
-        e1[d] = a[d];
-        e2[d] = b[d];
-      }
+    const Point<dim>     p(parse_vector<dim>(tip, section + "Tip"));
+    const Tensor<1, dim> e1 =
+      parse_vector<dim>(direction, section + "Tip direction");
+    const Tensor<1, dim> e2 =
+      parse_vector<dim>(normal, section + "Crack normal");
     check_input(e1.norm() > 0 && e2.norm() > 0 &&
                   std::abs(e1 * e2) < 1e-10 * e1.norm() * e2.norm(),
                 section + "Tip direction and " + section +

@@ -92,34 +92,6 @@ namespace xcrack
 
 
 
-  namespace
-  {
-    template <int dim>
-    Point<dim>
-    parse_point(const std::string &text, const std::string &entry)
-    {
-      const std::vector<std::string> parts = split_and_trim(text, ',');
-      check_input(parts.size() >= dim,
-                  entry + " = '" + text + "': expected " + std::to_string(dim) +
-                    " coordinates.");
-      Point<dim> p;
-      for (unsigned int d = 0; d < dim; ++d)
-        try
-          {
-            p[d] = Utilities::string_to_double(parts[d]);
-          }
-        catch (...)
-          {
-            throw InputError(entry + " = '" + text + "': '" + parts[d] +
-                             "' is not a number.");
-          }
-      // Extra coordinates are ignored, so that the 3D defaults serve in 2D.
-      return p;
-    }
-  } // namespace
-
-
-
   template <int dim>
   void
   MeshDescription::create(Triangulation<dim> &triangulation) const
@@ -127,9 +99,9 @@ namespace xcrack
     if (type == "box")
       {
         const Point<dim> p1 =
-          parse_point<dim>(lower_corner, "Mesh/Lower corner");
+          Point<dim>(parse_vector<dim>(lower_corner, "Mesh/Lower corner"));
         const Point<dim> p2 =
-          parse_point<dim>(upper_corner, "Mesh/Upper corner");
+          Point<dim>(parse_vector<dim>(upper_corner, "Mesh/Upper corner"));
         for (unsigned int d = 0; d < dim; ++d)
           check_input(p1[d] < p2[d],
                       "Mesh/Lower corner and Mesh/Upper corner: coordinate " +

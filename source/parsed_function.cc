@@ -26,6 +26,45 @@ namespace xcrack
 
 
 
+  std::vector<double>
+  parse_numbers(const std::string &text,
+                const unsigned int n,
+                const std::string &entry,
+                const bool         extra_allowed)
+  {
+    const std::vector<std::string> parts = split_and_trim(text, ',');
+    check_input(parts.size() == n || (extra_allowed && parts.size() > n),
+                entry + " = '" + text + "': expected " + std::to_string(n) +
+                  " comma-separated numbers.");
+    std::vector<double> values;
+    for (unsigned int i = 0; i < n; ++i)
+      try
+        {
+          values.push_back(Utilities::string_to_double(parts[i]));
+        }
+      catch (...)
+        {
+          throw InputError(entry + " = '" + text + "': '" + parts[i] +
+                           "' is not a number.");
+        }
+    return values;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  parse_vector(const std::string &text, const std::string &entry)
+  {
+    const std::vector<double> values = parse_numbers(text, dim, entry, true);
+    Tensor<1, dim>            t;
+    for (unsigned int d = 0; d < dim; ++d)
+      t[d] = values[d];
+    return t;
+  }
+
+
+
   namespace
   {
     std::string
@@ -110,6 +149,10 @@ namespace xcrack
 
 
 
+  template Tensor<1, 2>
+  parse_vector<2>(const std::string &, const std::string &);
+  template Tensor<1, 3>
+  parse_vector<3>(const std::string &, const std::string &);
   template class ParsedVectorFunction<2>;
   template class ParsedVectorFunction<3>;
 } // namespace xcrack

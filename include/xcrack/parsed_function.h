@@ -3,6 +3,7 @@
 
 #include <deal.II/base/auto_derivative_function.h>
 #include <deal.II/base/function_parser.h>
+#include <deal.II/base/tensor.h>
 
 #include <map>
 #include <string>
@@ -58,6 +59,23 @@ namespace xcrack
    */
   std::vector<std::string>
   split_and_trim(const std::string &text, const char separator);
+
+  /**
+   * The @p n comma-separated numbers of the parameter @p entry whose value
+   * is @p text; InputError (naming the entry) otherwise. With
+   * @p extra_allowed, further numbers are ignored: a point or vector written
+   * with three coordinates then serves in 2D too.
+   */
+  std::vector<double>
+  parse_numbers(const std::string &text,
+                const unsigned int n,
+                const std::string &entry,
+                const bool         extra_allowed = false);
+
+  /// A point or vector of dim coordinates (further ones ignored).
+  template <int dim>
+  Tensor<1, dim>
+  parse_vector(const std::string &text, const std::string &entry);
 } // namespace xcrack
 
 #endif

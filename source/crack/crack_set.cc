@@ -14,48 +14,6 @@ namespace xcrack
 {
   namespace
   {
-    /// Parse @p n comma-separated numbers of @p entry.
-    std::vector<double>
-    parse_numbers(const std::string &text,
-                  const unsigned int n,
-                  const std::string &entry)
-    {
-      const std::vector<std::string> parts = split_and_trim(text, ',');
-      check_input(parts.size() == n,
-                  entry + " = '" + text + "': expected " + std::to_string(n) +
-                    " comma-separated numbers.");
-      std::vector<double> values;
-      for (const auto &part : parts)
-        try
-          {
-            values.push_back(Utilities::string_to_double(part));
-          }
-        catch (...)
-          {
-            throw InputError(entry + " = '" + text + "': '" + part +
-                             "' is not a number.");
-          }
-      return values;
-    }
-
-    template <int dim>
-    Tensor<1, dim>
-    parse_vector(const std::string &text, const std::string &entry)
-    {
-      const std::vector<double> values = parse_numbers(text, dim, entry);
-      Tensor<1, dim>            t;
-      for (unsigned int d = 0; d < dim; ++d)
-        t[d] = values[d];
-      return t;
-    }
-
-    template <int dim>
-    Point<dim>
-    parse_point(const std::string &text, const std::string &entry)
-    {
-      return Point<dim>(parse_vector<dim>(text, entry));
-    }
-
     double
     parse_positive(const std::string &text, const std::string &entry)
     {
@@ -152,10 +110,10 @@ namespace xcrack
         check_input(shape == "segment",
                     name + "Shape = " + shape +
                       ": a 2D run supports the shape 'segment' only.");
-        const Point<2> start =
-          parse_point<2>(prm.get("Start point"), name + "Start point");
+        const Point<2> start = Point<2>(
+          parse_vector<2>(prm.get("Start point"), name + "Start point"));
         const Point<2> end =
-          parse_point<2>(prm.get("End point"), name + "End point");
+          Point<2>(parse_vector<2>(prm.get("End point"), name + "End point"));
         check_input((end - start).norm() > 0,
                     name + "Start point and " + name +
                       "End point: the segment has zero length.");
@@ -188,7 +146,7 @@ namespace xcrack
                     name + "Shape = segment: a 3D run needs a surface "
                            "(half plane, penny, ellipse, rectangle).");
         const Point<3> center =
-          parse_point<3>(prm.get("Center"), name + "Center");
+          Point<3>(parse_vector<3>(prm.get("Center"), name + "Center"));
         const Tensor<1, 3> normal =
           parse_vector<3>(prm.get("Normal"), name + "Normal");
         const Tensor<1, 3> direction =
