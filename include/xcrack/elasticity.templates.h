@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <set>
 
 namespace xcrack
 {
@@ -275,6 +276,10 @@ namespace xcrack
               }
       }
 
+    std::set<types::global_dof_index> paired_enriched_dofs;
+    for (const auto &pair : pairs)
+      paired_enriched_dofs.insert(pair.second.enriched);
+
     for (const auto &[id, function] : boundary_conditions.dirichlet)
       {
         std::map<types::global_dof_index, double> values;
@@ -293,10 +298,7 @@ namespace xcrack
               {
                 // Enriched vertex DoFs are handled with their standard
                 // partner; others (Q2 edges) are not supported yet.
-                bool has_partner = false;
-                for (const auto &p : pairs)
-                  has_partner = has_partner || p.second.enriched == dof;
-                check_input(has_partner,
+                check_input(paired_enriched_dofs.count(dof) == 1,
                             "Boundary conditions/Dirichlet: the crack reaches "
                             "boundary " +
                               std::to_string(id) +
