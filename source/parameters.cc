@@ -39,6 +39,13 @@ namespace xcrack
                         "true",
                         Patterns::Bool(),
                         "Write solution-<cycle>.pvtu files and solution.pvd.");
+      prm.declare_entry("Condition number up to dofs",
+                        "0",
+                        Patterns::Integer(0, 20000),
+                        "Compute the condition number of the stiffness "
+                        "matrix (dense eigenvalues, one MPI rank) for "
+                        "problems of at most this many DoFs and write it to "
+                        "statistics.csv as condition_number. 0: never.");
       prm.declare_entry("Timing summary",
                         "true",
                         Patterns::Bool(),
@@ -82,8 +89,9 @@ namespace xcrack
 
     prm.enter_subsection("Output");
     {
-      write_vtu      = prm.get_bool("Write vtu");
-      timing_summary = prm.get_bool("Timing summary");
+      write_vtu              = prm.get_bool("Write vtu");
+      timing_summary         = prm.get_bool("Timing summary");
+      condition_number_limit = prm.get_integer("Condition number up to dofs");
     }
     prm.leave_subsection();
   }

@@ -14,6 +14,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <xcrack/condition_number.h>
 #include <xcrack/elasticity.h>
 #include <xcrack/exact_solution.h>
 #include <xcrack/input_error.h>
@@ -50,7 +51,7 @@ namespace xcrack
         "its support holds less than this fraction of the support's volume: "
         "such a barely cut support makes the matrix nearly singular, and "
         "dropping it costs an error of the order of the square root of the "
-        "fraction. 0 keeps every cut support.");
+        "fraction. 0 keeps every support that is cut at all.");
     }
     prm.leave_subsection();
   }
@@ -765,6 +766,9 @@ namespace xcrack
                              (unsigned long long)n_free_enriched_dofs());
         statistics.add_value("solver_iterations",
                              (unsigned long long)iterations);
+        if (dof_handler.n_dofs() <= run_parameters.condition_number_limit)
+          statistics.add_value("condition_number",
+                               condition_number(system_matrix, constraints));
 
         pcout << "Cycle " << cycle << ": "
               << triangulation.n_global_active_cells() << " cells, "

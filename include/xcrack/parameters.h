@@ -30,6 +30,8 @@ namespace xcrack
     FunctionConstants user_constants;
     bool              write_vtu      = true;
     bool              timing_summary = true;
+    /// Largest problem whose condition number is computed (0: never).
+    unsigned int condition_number_limit = 0;
   };
 
   /// Declare every entry of every subsection xcrack knows.

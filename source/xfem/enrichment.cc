@@ -320,7 +320,7 @@ namespace xcrack
         // constraints has no split cell of its own; it is kept.)
         const double total = volume_plus[v] + volume_minus[v];
         if (enriched[v] && directly_split[v] &&
-            std::min(volume_plus[v], volume_minus[v]) <
+            std::min(volume_plus[v], volume_minus[v]) <=
               volume_tolerance * total)
           enriched[v] = false;
       }
