@@ -5,6 +5,8 @@
 
 #include <xcrack/crack/level_set_fields.h>
 
+#include <functional>
+
 namespace xcrack
 {
   template <int dim>
@@ -26,28 +28,27 @@ namespace xcrack
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
 
+    // Interpolate one level set of a crack into a ghosted vector.
+    TrilinosWrappers::MPI::Vector distributed(owned, comm);
+    const auto                    interpolate =
+      [&](const std::function<double(const Point<dim> &)> &f,
+          TrilinosWrappers::MPI::Vector                   &field) {
+        VectorTools::interpolate(dof_handler,
+                                 ScalarFunctionFromFunctionObject<dim>(f),
+                                 distributed);
+        field.reinit(owned, relevant, comm);
+        field = distributed;
+      };
+
     normal.resize(cracks.size());
     tangent.resize(cracks.size());
-    TrilinosWrappers::MPI::Vector distributed(owned, comm);
     for (unsigned int i = 0; i < cracks.size(); ++i)
       {
         const CrackGeometry<dim> &crack = cracks[i];
-        VectorTools::interpolate(dof_handler,
-                                 ScalarFunctionFromFunctionObject<dim>(
-                                   [&](const Point<dim> &p) {
-                                     return crack.lsn(p);
-                                   }),
-                                 distributed);
-        normal[i].reinit(owned, relevant, comm);
-        normal[i] = distributed;
-        VectorTools::interpolate(dof_handler,
-                                 ScalarFunctionFromFunctionObject<dim>(
-                                   [&](const Point<dim> &p) {
-                                     return crack.lst(p);
-                                   }),
-                                 distributed);
-        tangent[i].reinit(owned, relevant, comm);
-        tangent[i] = distributed;
+        interpolate([&](const Point<dim> &p) { return crack.lsn(p); },
+                    normal[i]);
+        interpolate([&](const Point<dim> &p) { return crack.lst(p); },
+                    tangent[i]);
       }
   }
 
