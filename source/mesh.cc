@@ -141,13 +141,7 @@ namespace xcrack
           }
         catch (const std::exception &e)
           {
-            std::string detail;
-            if (const auto *deal_exc = dynamic_cast<const ExceptionBase *>(&e))
-              {
-                std::ostringstream info;
-                deal_exc->print_info(info);
-                detail = Utilities::trim(info.str());
-              }
+            const std::string detail = message_of(e);
             throw InputError("Mesh/Generator name = " + generator_name +
                              " with Mesh/Generator arguments = '" +
                              generator_arguments + "' failed in " +
@@ -163,13 +157,7 @@ namespace xcrack
           }
         catch (const std::exception &e)
           {
-            std::string detail;
-            if (const auto *deal_exc = dynamic_cast<const ExceptionBase *>(&e))
-              {
-                std::ostringstream info;
-                deal_exc->print_info(info);
-                detail = Utilities::trim(info.str());
-              }
+            const std::string detail = message_of(e);
             throw InputError("Mesh/File name = " + file_name +
                              ": cannot read a " + std::to_string(dim) +
                              "D mesh from this file. " + detail);

@@ -115,21 +115,17 @@ namespace xcrack
 
 
 
-  namespace
+  std::string
+  message_of(const std::exception &e)
   {
-    /// The message of a deal.II exception without its source location.
-    std::string
-    message_of(const std::exception &e)
-    {
-      if (const auto *deal_exc = dynamic_cast<const ExceptionBase *>(&e))
-        {
-          std::ostringstream info;
-          deal_exc->print_info(info);
-          return Utilities::trim(info.str());
-        }
-      return e.what();
-    }
-  } // namespace
+    if (const auto *deal_exc = dynamic_cast<const ExceptionBase *>(&e))
+      {
+        std::ostringstream info;
+        deal_exc->print_info(info);
+        return Utilities::trim(info.str());
+      }
+    return e.what();
+  }
 
 
 

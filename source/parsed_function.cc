@@ -117,12 +117,7 @@ namespace xcrack
         for (const auto &c : constants)
           message << ' ' << c.first;
         message << '.';
-        if (const auto *deal_exc = dynamic_cast<const ExceptionBase *>(&e))
-          {
-            std::ostringstream info;
-            deal_exc->print_info(info);
-            message << " Parser says: " << Utilities::trim(info.str());
-          }
+        message << " Parser says: " << message_of(e);
         throw InputError(message.str());
       }
   }

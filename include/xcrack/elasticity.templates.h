@@ -751,7 +751,10 @@ namespace xcrack
             TimerOutput::Scope t(*timer, "refine");
             refinement.refine(triangulation, dof_handler, solution);
           }
-        update_level_sets();
+        // The level-set fields are only written for now (enrichment reads the
+        // crack geometry itself); propagation will update them every step.
+        if (run_parameters.write_vtu)
+          update_level_sets();
         setup_system();
         assemble_system();
         const unsigned int iterations = solve();

@@ -1,6 +1,7 @@
 #ifndef xcrack_input_error_h
 #define xcrack_input_error_h
 
+#include <exception>
 #include <stdexcept>
 #include <string>
 
@@ -32,6 +33,14 @@ namespace xcrack
     if (!condition)
       throw InputError(message);
   }
+
+  /**
+   * The message of @p e for a user: for a deal.II exception only its
+   * additional information, without the source file, line and stack trace
+   * that what() adds.
+   */
+  std::string
+  message_of(const std::exception &e);
 } // namespace xcrack
 
 #endif

@@ -95,96 +95,100 @@ namespace xcrack
 
 
 
-  template <>
+  namespace
+  {
+    /// The crack described by the current subsection of @p prm; @p name
+    /// prefixes the entries in error messages.
+    template <int dim>
+    std::unique_ptr<CrackGeometry<dim>>
+    create_crack(ParameterHandler &prm, const std::string &name);
+
+    template <>
+    std::unique_ptr<CrackGeometry<2>>
+    create_crack(ParameterHandler &prm, const std::string &name)
+    {
+      const std::string shape = prm.get("Shape");
+      check_input(shape == "segment",
+                  name + "Shape = " + shape +
+                    ": a 2D run supports the shape 'segment' only.");
+      const Point<2> start =
+        Point<2>(parse_vector<2>(prm.get("Start point"), name + "Start point"));
+      const Point<2> end =
+        Point<2>(parse_vector<2>(prm.get("End point"), name + "End point"));
+      check_input((end - start).norm() > 0,
+                  name + "Start point and " + name +
+                    "End point: the segment has zero length.");
+      const std::string tips = prm.get("Tips");
+      return std::make_unique<SegmentCrack>(start,
+                                            end,
+                                            tips == "both" || tips == "start",
+                                            tips == "both" || tips == "end");
+    }
+
+    template <>
+    std::unique_ptr<CrackGeometry<3>>
+    create_crack(ParameterHandler &prm, const std::string &name)
+    {
+      const std::string shape = prm.get("Shape");
+      check_input(shape != "segment",
+                  name + "Shape = segment: a 3D run needs a surface "
+                         "(half plane, penny, ellipse, rectangle).");
+      const Point<3> center =
+        Point<3>(parse_vector<3>(prm.get("Center"), name + "Center"));
+      const Tensor<1, 3> normal =
+        parse_vector<3>(prm.get("Normal"), name + "Normal");
+      const Tensor<1, 3> direction =
+        parse_vector<3>(prm.get("In-plane direction"),
+                        name + "In-plane direction");
+      check_input(normal.norm() > 0, name + "Normal is the zero vector.");
+      check_input(cross_product_3d(normal, direction).norm() >
+                    1e-6 * normal.norm() * direction.norm(),
+                  name + "In-plane direction is zero or parallel to " + name +
+                    "Normal: it must lie in the crack plane.");
+
+      if (shape == "half plane")
+        return std::make_unique<HalfPlaneCrack>(center, normal, direction);
+      else if (shape == "penny")
+        {
+          const double r = parse_positive(prm.get("Radius"), name + "Radius");
+          return std::make_unique<EllipticalCrack>(
+            center, normal, direction, r, r);
+        }
+      else if (shape == "ellipse")
+        {
+          const std::vector<double> ab =
+            parse_numbers(prm.get("Semi-axes"), 2, name + "Semi-axes");
+          check_input(ab[0] > 0 && ab[1] > 0,
+                      name + "Semi-axes: both must be positive.");
+          return std::make_unique<EllipticalCrack>(
+            center, normal, direction, ab[0], ab[1]);
+        }
+      else
+        {
+          const std::vector<double> size =
+            parse_numbers(prm.get("Size"), 2, name + "Size");
+          check_input(size[0] > 0 && size[1] > 0,
+                      name + "Size: width and height must be positive.");
+          return std::make_unique<RectangularCrack>(
+            center, normal, direction, size[0], size[1]);
+        }
+    }
+  } // namespace
+
+
+
+  template <int dim>
   void
-  CrackSet<2>::parse_parameters(ParameterHandler &prm)
+  CrackSet<dim>::parse_parameters(ParameterHandler &prm)
   {
     cracks.clear();
     prm.enter_subsection("Cracks");
     const unsigned int n = prm.get_integer("Number of cracks");
     for (unsigned int i = 1; i <= n; ++i)
       {
-        const std::string name = "Cracks/Crack " + std::to_string(i) + "/";
         prm.enter_subsection("Crack " + std::to_string(i));
-        const std::string shape = prm.get("Shape");
-        check_input(shape == "segment",
-                    name + "Shape = " + shape +
-                      ": a 2D run supports the shape 'segment' only.");
-        const Point<2> start = Point<2>(
-          parse_vector<2>(prm.get("Start point"), name + "Start point"));
-        const Point<2> end =
-          Point<2>(parse_vector<2>(prm.get("End point"), name + "End point"));
-        check_input((end - start).norm() > 0,
-                    name + "Start point and " + name +
-                      "End point: the segment has zero length.");
-        const std::string tips = prm.get("Tips");
         cracks.push_back(
-          std::make_unique<SegmentCrack>(start,
-                                         end,
-                                         tips == "both" || tips == "start",
-                                         tips == "both" || tips == "end"));
-        prm.leave_subsection();
-      }
-    prm.leave_subsection();
-  }
-
-
-
-  template <>
-  void
-  CrackSet<3>::parse_parameters(ParameterHandler &prm)
-  {
-    cracks.clear();
-    prm.enter_subsection("Cracks");
-    const unsigned int n = prm.get_integer("Number of cracks");
-    for (unsigned int i = 1; i <= n; ++i)
-      {
-        const std::string name = "Cracks/Crack " + std::to_string(i) + "/";
-        prm.enter_subsection("Crack " + std::to_string(i));
-        const std::string shape = prm.get("Shape");
-        check_input(shape != "segment",
-                    name + "Shape = segment: a 3D run needs a surface "
-                           "(half plane, penny, ellipse, rectangle).");
-        const Point<3> center =
-          Point<3>(parse_vector<3>(prm.get("Center"), name + "Center"));
-        const Tensor<1, 3> normal =
-          parse_vector<3>(prm.get("Normal"), name + "Normal");
-        const Tensor<1, 3> direction =
-          parse_vector<3>(prm.get("In-plane direction"),
-                          name + "In-plane direction");
-        check_input(normal.norm() > 0, name + "Normal is the zero vector.");
-        check_input(cross_product_3d(normal, direction).norm() >
-                      1e-6 * normal.norm() * direction.norm(),
-                    name + "In-plane direction is zero or parallel to " + name +
-                      "Normal: it must lie in the crack plane.");
-
-        if (shape == "half plane")
-          cracks.push_back(
-            std::make_unique<HalfPlaneCrack>(center, normal, direction));
-        else if (shape == "penny")
-          {
-            const double r = parse_positive(prm.get("Radius"), name + "Radius");
-            cracks.push_back(std::make_unique<EllipticalCrack>(
-              center, normal, direction, r, r));
-          }
-        else if (shape == "ellipse")
-          {
-            const std::vector<double> ab =
-              parse_numbers(prm.get("Semi-axes"), 2, name + "Semi-axes");
-            check_input(ab[0] > 0 && ab[1] > 0,
-                        name + "Semi-axes: both must be positive.");
-            cracks.push_back(std::make_unique<EllipticalCrack>(
-              center, normal, direction, ab[0], ab[1]));
-          }
-        else
-          {
-            const std::vector<double> size =
-              parse_numbers(prm.get("Size"), 2, name + "Size");
-            check_input(size[0] > 0 && size[1] > 0,
-                        name + "Size: width and height must be positive.");
-            cracks.push_back(std::make_unique<RectangularCrack>(
-              center, normal, direction, size[0], size[1]));
-          }
+          create_crack<dim>(prm, "Cracks/Crack " + std::to_string(i) + "/"));
         prm.leave_subsection();
       }
     prm.leave_subsection();
