@@ -33,7 +33,9 @@ integrate_below(const CrackGeometry<dim> &crack)
   GridGenerator::subdivided_hyper_cube(tria, 3);
   tria.refine_global(1);
   DoFHandler<dim> dof_handler(tria);
-  Enrichment<dim> enrichment(crack, 1, 0.);
+  EnrichmentParameters parameters;
+  parameters.heaviside_volume_tolerance = 0;
+  Enrichment<dim> enrichment(crack, 1, parameters);
   enrichment.set_fe_indices(dof_handler);
   dof_handler.distribute_dofs(enrichment.get_fe_collection());
 

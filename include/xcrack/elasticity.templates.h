@@ -41,19 +41,7 @@ namespace xcrack
     }
     prm.leave_subsection();
 
-    prm.enter_subsection("Enrichment");
-    {
-      prm.declare_entry(
-        "Heaviside volume tolerance",
-        "1e-9",
-        Patterns::Double(0, 0.5),
-        "A node is not enriched by the crack's jump when the smaller side of "
-        "its support holds less than this fraction of the support's volume: "
-        "such a barely cut support makes the matrix nearly singular, and "
-        "dropping it costs an error of the order of the square root of the "
-        "fraction. 0 keeps every support that is cut at all.");
-    }
-    prm.leave_subsection();
+    EnrichmentParameters::declare_parameters(prm);
   }
 
 
@@ -110,19 +98,28 @@ namespace xcrack
                   ": the X-FEM enrichment handles one crack for now.");
     if (cracks.size() == 1)
       {
-        prm.enter_subsection("Enrichment");
-        const double volume_tolerance =
-          prm.get_double("Heaviside volume tolerance");
-        prm.leave_subsection();
+        EnrichmentParameters enrichment_parameters;
+        enrichment_parameters.parse_parameters(prm);
         enrichment = std::make_unique<Enrichment<dim>>(cracks[0],
                                                        degree,
-                                                       volume_tolerance);
+                                                       enrichment_parameters);
+        // Gauss rules per element: the cells of the tip zone carry the
+        // non-polynomial branch functions and get two more points.
         for (const auto &fe : enrichment->get_fe_collection())
-          fe_collection.push_back(fe);
+          {
+            fe_collection.push_back(fe);
+            quadrature_collection.push_back(
+              QGauss<dim>(degree + (fe_collection.size() - 1 >=
+                                        Enrichment<dim>::tip ?
+                                      3 :
+                                      1)));
+          }
       }
     else
-      fe_collection.push_back(FESystem<dim>(FE_Q<dim>(degree), dim));
-    quadrature_collection.push_back(QGauss<dim>(degree + 1));
+      {
+        fe_collection.push_back(FESystem<dim>(FE_Q<dim>(degree), dim));
+        quadrature_collection.push_back(QGauss<dim>(degree + 1));
+      }
     face_quadrature_collection.push_back(QGauss<dim - 1>(degree + 1));
 
     // The output directory must be usable: this is the last check before
@@ -210,23 +207,30 @@ namespace xcrack
 
     // Interpolation treats enriched DoFs as nodal values, which they are
     // not: with unshifted enrichment the trace of u_h at a vertex is
-    // s + H a (standard and enriched DoF, H the side of the face). So where
-    // a Dirichlet vertex carries a free enriched DoF we prescribe s + H a
-    // per face side: s = g - H a if all its Dirichlet faces lie on one side
-    // of the crack, and s = (g+ + g-)/2, a = (g+ - g-)/2 at a crack mouth,
-    // where the data take both branches.
-    struct Pair
+    // s + sum_j phi_j(x) a_j (standard DoF s, enriched DoFs a_j, phi_j = H or
+    // a branch function, evaluated on the side of the face). So where a
+    // Dirichlet vertex carries free enriched DoFs we prescribe that sum: on
+    // one side of the crack s = g - sum_j phi_j a_j; at a crack mouth, where
+    // the data take two values g+ and g-, also the jump
+    // sum_j (phi_j+ - phi_j-) a_j = g+ - g-, solved for the DoF with the
+    // largest jump (the Heaviside DoF, a = (g+ - g-)/2, or F1's). Branch
+    // DoFs stay free otherwise: Williams-type data is carried by them, and
+    // zeroing them at the boundary would smear the singular field.
+    struct BoundaryNode
     {
-      types::global_dof_index enriched = numbers::invalid_dof_index;
-      std::map<int, double>   value_on_side; // H -> g
+      std::vector<types::global_dof_index> enriched;
+      std::vector<const Function<dim> *>   functions;
+      /// Side of the crack (+1, -1) -> point just inside a face, data.
+      std::map<int, std::pair<Point<dim>, double>> sides;
     };
-    std::map<types::global_dof_index, Pair> pairs; // by standard DoF
+    std::map<types::global_dof_index, BoundaryNode> nodes; // by standard DoF
+    std::set<types::global_dof_index>               partners;
     if (enrichment)
       {
         std::vector<types::global_dof_index> dofs;
         for (const auto &cell : dof_handler.active_cell_iterators())
           if (!cell->is_artificial() &&
-              cell->active_fe_index() == Enrichment<dim>::heaviside)
+              cell->active_fe_index() != Enrichment<dim>::plain)
             for (const auto &face : cell->face_iterators())
               {
                 if (!face->at_boundary())
@@ -238,9 +242,9 @@ namespace xcrack
                 const ComponentMask &mask =
                   boundary_conditions.dirichlet_mask.at(face->boundary_id());
                 const FiniteElement<dim> &fe = cell->get_fe();
+                const unsigned int        per_vertex = fe.n_dofs_per_vertex();
                 dofs.resize(fe.n_dofs_per_cell());
                 cell->get_dof_indices(dofs);
-                const int side = (cracks[0].lsn(face->center()) >= 0 ? 1 : -1);
                 for (const unsigned int fv : face->vertex_indices())
                   for (const unsigned int v : cell->vertex_indices())
                     if (cell->vertex_index(v) == face->vertex_index(fv))
@@ -250,9 +254,9 @@ namespace xcrack
                         const Point<dim> x =
                           face->vertex(fv) +
                           1e-10 * (face->center() - face->vertex(fv));
+                        const int      side = (cracks[0].lsn(x) >= 0 ? 1 : -1);
                         Vector<double> g(dim);
                         bc->second->vector_value(x, g);
-                        const unsigned int per_vertex = fe.n_dofs_per_vertex();
                         for (unsigned int i = v * per_vertex;
                              i < (v + 1) * per_vertex;
                              ++i)
@@ -262,24 +266,26 @@ namespace xcrack
                             if (!mask[c] ||
                                 Enrichment<dim>::is_enriched_dof(fe, i))
                               continue;
-                            for (unsigned int j = v * per_vertex;
-                                 j < (v + 1) * per_vertex;
-                                 ++j)
-                              if (Enrichment<dim>::is_enriched_dof(fe, j) &&
-                                  fe.system_to_component_index(j).first == c)
-                                {
-                                  Pair &pair               = pairs[dofs[i]];
-                                  pair.enriched            = dofs[j];
-                                  pair.value_on_side[side] = g[c];
-                                }
+                            BoundaryNode &node = nodes[dofs[i]];
+                            if (node.sides.empty())
+                              for (unsigned int j = v * per_vertex;
+                                   j < (v + 1) * per_vertex;
+                                   ++j)
+                                if (Enrichment<dim>::is_enriched_dof(fe, j) &&
+                                    fe.system_to_component_index(j).first ==
+                                      c &&
+                                    !constraints.is_constrained(dofs[j]))
+                                  {
+                                    node.enriched.push_back(dofs[j]);
+                                    node.functions.push_back(
+                                      enrichment->enrichment_function(fe, j));
+                                    partners.insert(dofs[j]);
+                                  }
+                            node.sides[side] = {x, g[c]};
                           }
                       }
               }
       }
-
-    std::set<types::global_dof_index> paired_enriched_dofs;
-    for (const auto &pair : pairs)
-      paired_enriched_dofs.insert(pair.second.enriched);
 
     for (const auto &[id, function] : boundary_conditions.dirichlet)
       {
@@ -299,7 +305,7 @@ namespace xcrack
               {
                 // Enriched vertex DoFs are handled with their standard
                 // partner; others (Q2 edges) are not supported yet.
-                check_input(paired_enriched_dofs.count(dof) == 1,
+                check_input(partners.count(dof) == 1,
                             "Boundary conditions/Dirichlet: the crack reaches "
                             "boundary " +
                               std::to_string(id) +
@@ -307,33 +313,51 @@ namespace xcrack
                               "degree 2 this is not supported yet.");
                 continue;
               }
-            const auto pair = pairs.find(dof);
-            if (pair == pairs.end() ||
-                constraints.is_constrained(pair->second.enriched))
+            const auto node = nodes.find(dof);
+            if (node == nodes.end() || node->second.enriched.empty())
               {
                 constraints.add_line(dof);
                 constraints.set_inhomogeneity(dof, value);
                 continue;
               }
-            const auto                   &sides = pair->second.value_on_side;
-            const types::global_dof_index a     = pair->second.enriched;
-            if (sides.size() == 1)
+            const BoundaryNode &n = node->second;
+            // phi_j on each side, and the mean of the data.
+            std::vector<double> mean(n.enriched.size(), 0.),
+              jump(n.enriched.size(), 0.);
+            double g_mean = 0, g_jump = 0;
+            for (const auto &[side, data] : n.sides)
               {
-                const int    H = sides.begin()->first;
-                const double g = sides.begin()->second;
-                constraints.add_line(dof);
-                constraints.add_entry(dof, a, -H);
-                constraints.set_inhomogeneity(dof, g);
-              }
-            else
-              {
-                const double g_plus = sides.at(1), g_minus = sides.at(-1);
-                constraints.add_line(dof);
-                constraints.set_inhomogeneity(dof, 0.5 * (g_plus + g_minus));
-                if (!constraints.is_constrained(a))
+                const double weight = 1. / n.sides.size();
+                g_mean += weight * data.second;
+                g_jump += side * data.second;
+                for (unsigned int j = 0; j < n.enriched.size(); ++j)
                   {
-                    constraints.add_line(a);
-                    constraints.set_inhomogeneity(a, 0.5 * (g_plus - g_minus));
+                    const double phi = n.functions[j]->value(data.first);
+                    mean[j] += weight * phi;
+                    jump[j] += side * phi;
+                  }
+              }
+            constraints.add_line(dof);
+            for (unsigned int j = 0; j < n.enriched.size(); ++j)
+              constraints.add_entry(dof, n.enriched[j], -mean[j]);
+            constraints.set_inhomogeneity(dof, g_mean);
+            if (n.sides.size() == 2)
+              {
+                unsigned int p = 0;
+                for (unsigned int j = 1; j < jump.size(); ++j)
+                  if (std::abs(jump[j]) > std::abs(jump[p]))
+                    p = j;
+                if (std::abs(jump[p]) > 1e-12 &&
+                    !constraints.is_constrained(n.enriched[p]))
+                  {
+                    constraints.add_line(n.enriched[p]);
+                    for (unsigned int j = 0; j < jump.size(); ++j)
+                      if (j != p)
+                        constraints.add_entry(n.enriched[p],
+                                              n.enriched[j],
+                                              -jump[j] / jump[p]);
+                    constraints.set_inhomogeneity(n.enriched[p],
+                                                  g_jump / jump[p]);
                   }
               }
           }
@@ -350,12 +374,12 @@ namespace xcrack
     std::unique_ptr<FEValues<dim>>                       &split_values,
     const unsigned int                                    n_points_1d) const
   {
-    if (enrichment && enrichment->is_split(cell))
+    if (const Quadrature<dim> *rule =
+          (enrichment ? enrichment->special_quadrature(cell, n_points_1d) :
+                        nullptr))
       {
         split_values = std::make_unique<FEValues<dim>>(
-          cell->get_fe(),
-          enrichment->split_cell_quadrature(cell, n_points_1d),
-          hp_fe_values.get_update_flags());
+          cell->get_fe(), *rule, hp_fe_values.get_update_flags());
         split_values->reinit(cell);
         return *split_values;
       }
@@ -520,7 +544,8 @@ namespace xcrack
     // integrated accurately even for Q2 and smooth but oscillating data.
     hp::QCollection<dim> error_quadrature;
     for (unsigned int i = 0; i < fe_collection.size(); ++i)
-      error_quadrature.push_back(QGauss<dim>(fe_collection[i].degree + 3));
+      error_quadrature.push_back(
+        QGauss<dim>(degree + (enrichment && i >= Enrichment<dim>::tip ? 5 : 3)));
     hp::FEValues<dim>                hp_fe_values(fe_collection,
                                    error_quadrature,
                                    update_values | update_gradients |
@@ -737,11 +762,19 @@ namespace xcrack
     pcout << "xcrack: " << dim << "D linear elasticity, Q" << degree
           << " elements, " << linear_solver.type << " solver" << std::endl;
     if (enrichment)
-      pcout << "Note: crack-tip enrichment is not implemented yet: the "
-               "crack is represented by the jump enrichment of the cells it "
-               "splits completely; cells containing its front are not "
-               "enriched."
-            << std::endl;
+      {
+        const auto &e = enrichment->get_parameters();
+        pcout << "X-FEM: jump enrichment";
+        if (e.tip_zone == EnrichmentParameters::TipZone::topological)
+          pcout << ", branch functions on the nodes of the cells the front "
+                   "touches";
+        else if (e.tip_zone == EnrichmentParameters::TipZone::geometric)
+          pcout << ", branch functions within " << e.radius
+                << " of the front";
+        else
+          pcout << " only (no branch functions)";
+        pcout << std::endl;
+      }
 
     std::map<std::string, double> previous_times;
     for (unsigned int cycle = 0; cycle < refinement.n_cycles; ++cycle)

@@ -4,12 +4,14 @@
 #include <deal.II/distributed/tria_base.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_enriched.h>
+#include <deal.II/fe/fe_nothing.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/hp/q_collection.h>
-#include <deal.II/non_matching/quadrature_generator.h>
 
+#include <xcrack/input_error.h>
+#include <xcrack/xfem/cell_quadrature.h>
 #include <xcrack/xfem/enrichment.h>
 
 #include <algorithm>
@@ -43,107 +45,120 @@ namespace xcrack
 
 
 
-  namespace
+  void
+  EnrichmentParameters::declare_parameters(ParameterHandler &prm)
   {
-    /**
-     * The Q1 interpolant of vertex values on the reference cell, with the
-     * value, gradient and Hessian the quadrature generator asks for.
-     */
-    template <int dim>
-    class ReferenceCellLevelSet : public Function<dim>
+    prm.enter_subsection("Enrichment");
     {
-    public:
-      explicit ReferenceCellLevelSet(const std::vector<double> &vertex_values)
-        : vertex_values(vertex_values)
-      {}
-
-      double
-      value(const Point<dim> &p, const unsigned int = 0) const override
-      {
-        double v = 0;
-        for (unsigned int i = 0; i < vertex_values.size(); ++i)
-          v += vertex_values[i] * q1.shape_value(i, p);
-        return v;
-      }
-
-      Tensor<1, dim>
-      gradient(const Point<dim> &p, const unsigned int = 0) const override
-      {
-        Tensor<1, dim> g;
-        for (unsigned int i = 0; i < vertex_values.size(); ++i)
-          g += vertex_values[i] * q1.shape_grad(i, p);
-        return g;
-      }
-
-      SymmetricTensor<2, dim>
-      hessian(const Point<dim> &p, const unsigned int = 0) const override
-      {
-        Tensor<2, dim> h;
-        for (unsigned int i = 0; i < vertex_values.size(); ++i)
-          h += vertex_values[i] * q1.shape_grad_grad(i, p);
-        return symmetrize(h);
-      }
-
-    private:
-      // FE_Q(1) numbers its shape functions like the cell's vertices.
-      const FE_Q<dim>     q1{1};
-      std::vector<double> vertex_values;
-    };
-
-    /**
-     * The rule of a cell cut by the zero set of the Q1 interpolant of
-     * @p vertex_values (reference coordinates): Gauss rules of
-     * @p n_points_1d points per direction on each side, joined. Also
-     * returns the reference volume of the negative side.
-     */
-    template <int dim>
-    std::pair<Quadrature<dim>, double>
-    cut_cell_rule(const std::vector<double> &vertex_values,
-                  const unsigned int         n_points_1d)
-    {
-      const ReferenceCellLevelSet<dim>      level_set(vertex_values);
-      const hp::QCollection<1>              q1d(QGauss<1>{n_points_1d});
-      NonMatching::QuadratureGenerator<dim> generator(q1d);
-      Point<dim>                            upper;
-      for (unsigned int d = 0; d < dim; ++d)
-        upper[d] = 1;
-      generator.generate(level_set,
-                         BoundingBox<dim>(std::make_pair(Point<dim>(), upper)));
-
-      std::vector<Point<dim>> points;
-      std::vector<double>     weights;
-      for (const Quadrature<dim> *side : {&generator.get_inside_quadrature(),
-                                          &generator.get_outside_quadrature()})
-        {
-          points.insert(points.end(),
-                        side->get_points().begin(),
-                        side->get_points().end());
-          weights.insert(weights.end(),
-                         side->get_weights().begin(),
-                         side->get_weights().end());
-        }
-      const auto &inside = generator.get_inside_quadrature().get_weights();
-      return {Quadrature<dim>(points, weights),
-              std::accumulate(inside.begin(), inside.end(), 0.)};
+      prm.declare_entry(
+        "Heaviside volume tolerance",
+        "1e-9",
+        Patterns::Double(0, 0.5),
+        "A node is not enriched by the crack's jump when the smaller side of "
+        "its support holds less than this fraction of the support's volume: "
+        "such a barely cut support makes the matrix nearly singular, and "
+        "dropping it costs an error of the order of the square root of the "
+        "fraction. 0 keeps every support that is cut at all.");
+      prm.declare_entry(
+        "Tip enrichment",
+        "topological",
+        Patterns::Selection("none|topological|geometric"),
+        "Which nodes carry the four crack-tip branch functions. topological: "
+        "the nodes of the cells the front touches (cheap; energy error still "
+        "falls like h^(1/2)); geometric: also every node within Enrichment "
+        "radius of the front (energy error ~ h for Q1, more enriched DoFs "
+        "and a worse condition number); none: jump enrichment only.");
+      prm.declare_entry(
+        "Enrichment radius",
+        "0",
+        Patterns::Double(0),
+        "Radius of the geometric tip zone, in length units (e.g. a tenth of "
+        "the crack length). Only used with Tip enrichment = geometric, which "
+        "needs it > 0.");
+      prm.declare_entry(
+        "Tip quadrature points",
+        "6",
+        Patterns::Integer(2, 20),
+        "Gauss points per direction of each triangle of the fan rule in the "
+        "cells the front touches (and per slice along a 3D front). The "
+        "stiffness integrands are smooth in the fan's graded coordinates, "
+        "so a few points suffice; raise it to check.");
     }
-  } // namespace
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  EnrichmentParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Enrichment");
+    heaviside_volume_tolerance = prm.get_double("Heaviside volume tolerance");
+    const std::string zone     = prm.get("Tip enrichment");
+    tip_zone = (zone == "none"        ? TipZone::none :
+                zone == "topological" ? TipZone::topological :
+                                        TipZone::geometric);
+    radius   = prm.get_double("Enrichment radius");
+    tip_quadrature_points = prm.get_integer("Tip quadrature points");
+    prm.leave_subsection();
+    check_input(tip_zone != TipZone::geometric || radius > 0,
+                "Enrichment/Tip enrichment = geometric needs Enrichment "
+                "radius > 0 (it is " +
+                  std::to_string(radius) + ").");
+    check_input(tip_zone == TipZone::geometric || radius == 0,
+                "Enrichment/Enrichment radius = " + std::to_string(radius) +
+                  " is only used with Tip enrichment = geometric (it is " +
+                  zone + ").");
+  }
 
 
 
   template <int dim>
-  Enrichment<dim>::Enrichment(const CrackGeometry<dim> &crack,
-                              const unsigned int        degree,
-                              const double              volume_tolerance)
+  Enrichment<dim>::Enrichment(const CrackGeometry<dim>   &crack,
+                              const unsigned int          degree,
+                              const EnrichmentParameters &parameters)
     : crack(crack)
-    , volume_tolerance(volume_tolerance)
+    , parameters(parameters)
     , heaviside_function(crack)
   {
-    fe_collection.push_back(
-      FESystem<dim>(FE_Enriched<dim>(FE_Q<dim>(degree)), dim));
-    fe_collection.push_back(FESystem<dim>(FE_Enriched<dim>(FE_Q<dim>(degree),
-                                                           FE_Q<dim>(degree),
-                                                           &heaviside_function),
-                                          dim));
+    for (unsigned int k = 0; k < BranchFunction<dim>::n_functions; ++k)
+      branch_functions.push_back(
+        std::make_unique<BranchFunction<dim>>(crack, k));
+
+    using Cell = typename Triangulation<dim>::cell_iterator;
+    using EnrichmentFunction =
+      std::function<const Function<dim> *(const Cell &)>;
+    const std::vector<EnrichmentFunction> jump = {
+      [this](const Cell &) { return &heaviside_function; }};
+    std::vector<EnrichmentFunction> branches;
+    for (const auto &f : branch_functions)
+      branches.push_back([f = f.get()](const Cell &) { return f; });
+
+    const FE_Q<dim>       standard(degree), linear(1);
+    const FE_Nothing<dim> nothing(1, /*dominate=*/true);
+    // Index = (jump ? 1 : 0) + (branches ? 2 : 0): plain, heaviside, tip,
+    // both.
+    for (const bool with_branches : {false, true})
+      for (const bool with_jump : {false, true})
+        fe_collection.push_back(FESystem<dim>(
+          FE_Enriched<dim>(&standard,
+                           {with_jump ? static_cast<const FiniteElement<dim> *>(
+                                          &standard) :
+                                        &nothing,
+                            with_branches ?
+                              static_cast<const FiniteElement<dim> *>(&linear) :
+                              &nothing},
+                           {jump, branches}),
+          dim));
+  }
+
+
+
+  template <int dim>
+  const EnrichmentParameters &
+  Enrichment<dim>::get_parameters() const
+  {
+    return parameters;
   }
 
 
@@ -198,12 +213,29 @@ namespace xcrack
 
 
   template <int dim>
+  std::vector<double>
+  Enrichment<dim>::vertex_values(
+    const typename Triangulation<dim>::cell_iterator &cell,
+    const bool                                        normal) const
+  {
+    std::vector<double> values;
+    for (const unsigned int v : cell->vertex_indices())
+      values.push_back(normal ? crack.lsn(cell->vertex(v)) :
+                                crack.lst(cell->vertex(v)));
+    return values;
+  }
+
+
+
+  template <int dim>
   void
   Enrichment<dim>::set_fe_indices(DoFHandler<dim> &dof_handler)
   {
     const Triangulation<dim> &tria = dof_handler.get_triangulation();
     cell_kind.assign(tria.n_active_cells(), CellKind::plain);
-    split_rules.clear();
+    special_rules.clear();
+    const bool with_tips =
+      parameters.tip_zone != EnrichmentParameters::TipZone::none;
 
     std::vector<bool> touches_split(tria.n_vertices(), false);
     std::vector<bool> touches_tip(tria.n_vertices(), false);
@@ -215,23 +247,43 @@ namespace xcrack
     for (const auto &cell : tria.active_cell_iterators())
       if (!cell->is_artificial())
         {
-          double min_lsn = std::numeric_limits<double>::max(),
-                 max_lsn = -min_lsn;
-          double min_lst = min_lsn, max_lst = -min_lsn;
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              const double n = crack.lsn(cell->vertex(v));
-              const double t = crack.lst(cell->vertex(v));
-              min_lsn        = std::min(min_lsn, n);
-              max_lsn        = std::max(max_lsn, n);
-              min_lst        = std::min(min_lst, t);
-              max_lst        = std::max(max_lst, t);
-            }
+          const std::vector<double> lsn = vertex_values(cell, true);
+          const std::vector<double> lst = vertex_values(cell, false);
+          const auto [min_lsn, max_lsn] =
+            std::minmax_element(lsn.begin(), lsn.end());
+          const auto [min_lst, max_lst] =
+            std::minmax_element(lst.begin(), lst.end());
+
+          CellKind kind = CellKind::plain;
+          if (*min_lsn <= 0 && *max_lsn >= 0 && *min_lst <= 0 &&
+              *max_lst >= 0 &&
+              !CellQuadrature::front_points<dim>(lsn, lst).empty())
+            kind = CellKind::tip;
           // lsn = 0 counts as the positive side (as H(0) = +1 does): a crack
           // through a row of nodes then splits the cells on its negative
           // side, along their faces.
-          const bool cut = (min_lsn < 0 && max_lsn >= 0);
-          if (!cut || min_lst >= 0)
+          else if (*min_lsn < 0 && *max_lsn >= 0)
+            {
+              // Split if the zero set of lsn crosses the cell on the crack:
+              // look at lst where it crosses the edges.
+              for (unsigned int l = 0; l < GeometryInfo<dim>::lines_per_cell;
+                   ++l)
+                {
+                  const unsigned int a =
+                    GeometryInfo<dim>::line_to_cell_vertices(l, 0);
+                  const unsigned int b =
+                    GeometryInfo<dim>::line_to_cell_vertices(l, 1);
+                  if ((lsn[a] < 0) != (lsn[b] < 0))
+                    {
+                      const double t = lsn[a] / (lsn[a] - lsn[b]);
+                      if ((1 - t) * lst[a] + t * lst[b] < 0)
+                        kind = CellKind::split;
+                    }
+                }
+            }
+          cell_kind[cell->active_cell_index()] = kind;
+
+          if (kind == CellKind::plain)
             {
               // Not on the crack: the whole cell lies on one side of it.
               const double cell_side = crack.lsn(cell->center());
@@ -241,16 +293,10 @@ namespace xcrack
                   cell->measure();
               continue;
             }
-          const CellKind kind = (max_lst < 0 ? CellKind::split : CellKind::tip);
-          cell_kind[cell->active_cell_index()] = kind;
-          double fraction_minus                = 0.5;
-          if (kind == CellKind::split)
-            {
-              std::vector<double> values;
-              for (const unsigned int v : cell->vertex_indices())
-                values.push_back(crack.lsn(cell->vertex(v)));
-              fraction_minus = cut_cell_rule<dim>(values, 2).second;
-            }
+          const double fraction_minus =
+            (kind == CellKind::split ?
+               CellQuadrature::cut_cell_rule<dim>(lsn, 2).second :
+               0.5);
           for (const unsigned int v : cell->vertex_indices())
             {
               const unsigned int index = cell->vertex_index(v);
@@ -267,106 +313,136 @@ namespace xcrack
     import_ghost_vertex_flags(tria, touches_tip);
 
     // A coarse vertex whose hanging neighbour (the midpoint of a refined
-    // line, or a vertex inside a refined face) touches a split cell has a
-    // function that reaches into that cell through the hanging-node
+    // line, or a vertex inside a refined face) touches a split or tip cell
+    // has a function that reaches into that cell through the hanging-node
     // constraints: it counts as touching it. 2:1 mesh balance keeps the
     // chains one level deep; a second pass covers a line refined twice.
     for (unsigned int pass = 0; pass < 2; ++pass)
       for (const auto &cell : tria.active_cell_iterators())
         if (!cell->is_artificial())
           {
-            const auto pull = [&](const auto &object, const auto &children) {
-              bool split = false, tip = false;
-              for (const unsigned int h : children)
-                {
-                  split = split || touches_split[h];
-                  tip   = tip || touches_tip[h];
-                }
+            const auto pull = [&](const auto &object, const unsigned int h) {
               for (const unsigned int v : object->vertex_indices())
                 {
                   touches_split[object->vertex_index(v)] =
-                    touches_split[object->vertex_index(v)] || split;
+                    touches_split[object->vertex_index(v)] || touches_split[h];
                   touches_tip[object->vertex_index(v)] =
-                    touches_tip[object->vertex_index(v)] || tip;
+                    touches_tip[object->vertex_index(v)] || touches_tip[h];
                 }
             };
             for (unsigned int l = 0; l < cell->n_lines(); ++l)
               if (cell->line(l)->has_children())
-                pull(cell->line(l),
-                     std::vector<unsigned int>{
-                       cell->line(l)->child(0)->vertex_index(1)});
+                pull(cell->line(l), cell->line(l)->child(0)->vertex_index(1));
             if (dim == 3)
               for (const auto &face : cell->face_iterators())
                 if (face->has_children())
-                  {
-                    // The centre of an isotropically refined quad (vertex
-                    // 3 of child 0) depends on all four corners; the
-                    // midpoints of its lines are handled with the lines.
-                    pull(face,
-                         std::vector<unsigned int>{
-                           face->child(0)->vertex_index(3)});
-                  }
+                  // The centre of an isotropically refined quad (vertex 3 of
+                  // child 0) depends on all four corners; the midpoints of
+                  // its lines are handled with the lines.
+                  pull(face, face->child(0)->vertex_index(3));
           }
 
-    // The vertices whose shape functions are enriched.
-    std::vector<bool> &enriched = enriched_vertex;
-    enriched.assign(tria.n_vertices(), false);
-    for (unsigned int v = 0; v < tria.n_vertices(); ++v)
-      {
-        enriched[v] = touches_split[v] && !touches_tip[v];
-        // A support the crack barely cuts gives a function that is almost a
-        // copy of the standard one, and a nearly singular matrix: drop it.
-        // (A vertex that only reaches split cells through hanging-node
-        // constraints has no split cell of its own; it is kept.)
-        const double total = volume_plus[v] + volume_minus[v];
-        if (enriched[v] && directly_split[v] &&
-            std::min(volume_plus[v], volume_minus[v]) <=
-              volume_tolerance * total)
-          enriched[v] = false;
-      }
+    // The vertices whose shape functions are enriched. The tip zone is
+    // decided from the vertices' own positions, the same on every rank.
+    tip_vertex.assign(tria.n_vertices(), false);
+    heaviside_vertex.assign(tria.n_vertices(), false);
+    std::vector<bool> vertex_seen(tria.n_vertices(), false);
+    for (const auto &cell : tria.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const unsigned int index = cell->vertex_index(v);
+            if (vertex_seen[index])
+              continue;
+            vertex_seen[index] = true;
+            if (with_tips)
+              {
+                const Point<dim> &x = cell->vertex(v);
+                tip_vertex[index] =
+                  touches_tip[index] ||
+                  (parameters.tip_zone ==
+                     EnrichmentParameters::TipZone::geometric &&
+                   std::hypot(crack.lsn(x), crack.lst(x)) <= parameters.radius);
+              }
+            heaviside_vertex[index] = touches_split[index] &&
+                                      !touches_tip[index] && !tip_vertex[index];
+            // A support the crack barely cuts gives a function that is almost
+            // a copy of the standard one, and a nearly singular matrix: drop
+            // it. (A vertex that only reaches split cells through hanging-node
+            // constraints has no split cell of its own; it is kept.)
+            const double total = volume_plus[index] + volume_minus[index];
+            if (heaviside_vertex[index] && directly_split[index] &&
+                std::min(volume_plus[index], volume_minus[index]) <=
+                  parameters.heaviside_volume_tolerance * total)
+              heaviside_vertex[index] = false;
+          }
     // The owners of the ghost cells see their vertices' full supports.
-    import_ghost_vertex_flags(tria, enriched, /*overwrite=*/true);
+    import_ghost_vertex_flags(tria, heaviside_vertex, /*overwrite=*/true);
+    import_ghost_vertex_flags(tria, tip_vertex, /*overwrite=*/true);
 
     // A hanging vertex takes its values from the vertices of the coarse
     // line or face it lies on: where one of those is enriched, so is the
     // hanging vertex's function on the fine side, and the fine cells around
     // it need the enriched element too (else the enriched function of the
     // coarse side would end at a non-conforming face).
-    std::vector<bool> influenced = enriched;
-    for (const auto &cell : tria.active_cell_iterators())
-      if (!cell->is_artificial())
-        {
-          for (unsigned int l = 0; l < cell->n_lines(); ++l)
-            {
-              const auto line = cell->line(l);
-              if (line->has_children() && (enriched[line->vertex_index(0)] ||
-                                           enriched[line->vertex_index(1)]))
-                influenced[line->child(0)->vertex_index(1)] = true;
-            }
-          if (dim == 3)
-            for (const auto &face : cell->face_iterators())
-              if (face->has_children())
-                {
-                  bool any = false;
-                  for (const unsigned int v : face->vertex_indices())
-                    any = any || enriched[face->vertex_index(v)];
-                  if (any)
-                    for (unsigned int c = 0; c < face->n_children(); ++c)
-                      for (const unsigned int v :
-                           face->child(c)->vertex_indices())
-                        influenced[face->child(c)->vertex_index(v)] = true;
-                }
-        }
+    const auto influence = [&](const std::vector<bool> &enriched) {
+      std::vector<bool> influenced = enriched;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (!cell->is_artificial())
+          {
+            for (unsigned int l = 0; l < cell->n_lines(); ++l)
+              {
+                const auto line = cell->line(l);
+                if (line->has_children() && (enriched[line->vertex_index(0)] ||
+                                             enriched[line->vertex_index(1)]))
+                  influenced[line->child(0)->vertex_index(1)] = true;
+              }
+            if (dim == 3)
+              for (const auto &face : cell->face_iterators())
+                if (face->has_children())
+                  {
+                    bool any = false;
+                    for (const unsigned int v : face->vertex_indices())
+                      any = any || enriched[face->vertex_index(v)];
+                    if (any)
+                      for (unsigned int c = 0; c < face->n_children(); ++c)
+                        for (const unsigned int v :
+                             face->child(c)->vertex_indices())
+                          influenced[face->child(c)->vertex_index(v)] = true;
+                  }
+          }
+      return influenced;
+    };
+    const std::vector<bool> jump_influenced   = influence(heaviside_vertex);
+    const std::vector<bool> branch_influenced = influence(tip_vertex);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          bool has_enriched_vertex = false;
+          bool jump = false, branches = false;
           for (const unsigned int v : cell->vertex_indices())
-            has_enriched_vertex =
-              has_enriched_vertex || influenced[cell->vertex_index(v)];
-          cell->set_active_fe_index(has_enriched_vertex ? heaviside : plain);
+            {
+              jump     = jump || jump_influenced[cell->vertex_index(v)];
+              branches = branches || branch_influenced[cell->vertex_index(v)];
+            }
+          cell->set_active_fe_index((jump ? heaviside : plain) +
+                                    (branches ? tip : plain));
         }
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Enrichment<dim>::slot(const FiniteElement<dim> &fe, const unsigned int i)
+  {
+    // Outer FESystem: (base, component) and the index inside FE_Enriched,
+    // whose base 0 is the standard FE_Q, base 1 the jump slot and base 2
+    // the branch slot (one copy per branch function).
+    const auto &index = fe.system_to_base_index(i);
+    return fe.base_element(index.first.first)
+      .system_to_base_index(index.second)
+      .first.first;
   }
 
 
@@ -376,12 +452,28 @@ namespace xcrack
   Enrichment<dim>::is_enriched_dof(const FiniteElement<dim> &fe,
                                    const unsigned int        i)
   {
-    // Outer FESystem: (base, component) and the index inside FE_Enriched,
-    // whose own base 0 is the standard FE_Q and base 1 the enriched one.
+    return slot(fe, i) > 0;
+  }
+
+
+
+  template <int dim>
+  const Function<dim> *
+  Enrichment<dim>::enrichment_function(const FiniteElement<dim> &fe,
+                                       const unsigned int        i) const
+  {
     const auto &index = fe.system_to_base_index(i);
-    return fe.base_element(index.first.first)
-             .system_to_base_index(index.second)
-             .first.first > 0;
+    const auto &inner =
+      fe.base_element(index.first.first).system_to_base_index(index.second);
+    switch (inner.first.first)
+      {
+        case 0:
+          return nullptr;
+        case 1:
+          return &heaviside_function;
+        default:
+          return branch_functions[inner.first.second].get();
+      }
   }
 
 
@@ -397,13 +489,23 @@ namespace xcrack
 
 
   template <int dim>
+  bool
+  Enrichment<dim>::is_tip(
+    const typename DoFHandler<dim>::active_cell_iterator &cell) const
+  {
+    return cell_kind[cell->active_cell_index()] == CellKind::tip;
+  }
+
+
+
+  template <int dim>
   IndexSet
   Enrichment<dim>::enriched_dofs(const DoFHandler<dim> &dof_handler) const
   {
     IndexSet                             result(dof_handler.n_dofs());
     std::vector<types::global_dof_index> dofs;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (!cell->is_artificial() && cell->active_fe_index() == heaviside)
+      if (!cell->is_artificial() && cell->active_fe_index() != plain)
         {
           dofs.resize(cell->get_fe().n_dofs_per_cell());
           cell->get_dof_indices(dofs);
@@ -423,23 +525,32 @@ namespace xcrack
     const DoFHandler<dim>     &dof_handler,
     AffineConstraints<double> &constraints) const
   {
-    // For every enriched DoF: does its support contain a split cell, a tip
-    // cell? All cells of the support of a DoF of an owned cell are owned or
-    // ghost, so the answer is complete where it is needed.
-    std::map<types::global_dof_index, std::pair<bool, bool>> support;
-    std::vector<types::global_dof_index>                     dofs;
+    // For every enriched non-vertex DoF (Q2 jump DoFs): does its support
+    // contain a split cell, a tip cell, a cell of the tip zone? All cells of
+    // the support of a DoF of an owned cell are owned or ghost, so the
+    // answer is complete where it is needed.
+    struct Support
+    {
+      bool split = false, tip = false, zone = false;
+    };
+    std::map<types::global_dof_index, Support> support;
+    std::vector<types::global_dof_index>       dofs;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (!cell->is_artificial() && cell->active_fe_index() == heaviside)
+      if (!cell->is_artificial() && cell->active_fe_index() != plain)
         {
           dofs.resize(cell->get_fe().n_dofs_per_cell());
           cell->get_dof_indices(dofs);
           const CellKind kind = cell_kind[cell->active_cell_index()];
+          bool           zone = false;
+          for (const unsigned int v : cell->vertex_indices())
+            zone = zone || tip_vertex[cell->vertex_index(v)];
           for (unsigned int i = 0; i < dofs.size(); ++i)
             if (is_enriched_dof(cell->get_fe(), i))
               {
-                auto &s  = support[dofs[i]];
-                s.first  = s.first || kind == CellKind::split;
-                s.second = s.second || kind == CellKind::tip;
+                auto &s = support[dofs[i]];
+                s.split = s.split || kind == CellKind::split;
+                s.tip   = s.tip || kind == CellKind::tip;
+                s.zone  = s.zone || zone;
               }
         }
 
@@ -450,37 +561,77 @@ namespace xcrack
         if (constraints.is_constrained(dof))
           for (const auto &entry : *constraints.get_constraint_entries(dof))
             {
-              auto &s  = support[entry.first];
-              s.first  = s.first || flags.first;
-              s.second = s.second || flags.second;
+              auto &s = support[entry.first];
+              s.split = s.split || flags.split;
+              s.tip   = s.tip || flags.tip;
+              s.zone  = s.zone || flags.zone;
             }
 
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->active_fe_index() == heaviside)
+      if (cell->is_locally_owned() && cell->active_fe_index() != plain)
         {
-          dofs.resize(cell->get_fe().n_dofs_per_cell());
+          const FiniteElement<dim> &fe = cell->get_fe();
+          dofs.resize(fe.n_dofs_per_cell());
           cell->get_dof_indices(dofs);
+          const unsigned int n_vertex_dofs =
+            fe.n_dofs_per_vertex() * cell->n_vertices();
           for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (is_enriched_dof(cell->get_fe(), i))
-              {
-                // Vertex DoFs follow the vertex flags, which are complete on
-                // every rank; the others the support of their function.
-                const FiniteElement<dim> &fe = cell->get_fe();
-                const unsigned int        n_vertex_dofs =
-                  fe.n_dofs_per_vertex() * cell->n_vertices();
-                bool keep;
-                if (i < n_vertex_dofs)
-                  keep = enriched_vertex[cell->vertex_index(
-                    i / fe.n_dofs_per_vertex())];
-                else
-                  {
-                    const auto &s = support[dofs[i]];
-                    keep          = s.first && !s.second;
-                  }
-                if (!keep && !constraints.is_constrained(dofs[i]))
-                  constraints.add_line(dofs[i]);
-              }
+            {
+              const unsigned int s = slot(fe, i);
+              if (s == 0)
+                continue;
+              // Vertex DoFs follow the vertex flags, which are complete on
+              // every rank; the others the support of their function.
+              bool keep;
+              if (i < n_vertex_dofs)
+                keep = (s == 1 ? heaviside_vertex :
+                                 tip_vertex)[cell->vertex_index(
+                  i / fe.n_dofs_per_vertex())];
+              else
+                {
+                  const Support &flags = support[dofs[i]];
+                  keep = flags.split && !flags.tip && !flags.zone;
+                }
+              if (!keep && !constraints.is_constrained(dofs[i]))
+                constraints.add_line(dofs[i]);
+            }
         }
+  }
+
+
+
+  template <int dim>
+  const Quadrature<dim> *
+  Enrichment<dim>::special_quadrature(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const unsigned int                                    n_points_1d) const
+  {
+    const CellKind kind = cell_kind[cell->active_cell_index()];
+    if (kind == CellKind::plain)
+      return nullptr;
+    // Split cells with branch functions integrate them as finely as tip
+    // cells: a low-order rule would leave their many DoFs underintegrated
+    // (spurious zero-energy modes).
+    const unsigned int n =
+      (kind == CellKind::tip || cell->active_fe_index() >= tip ?
+         std::max(n_points_1d, parameters.tip_quadrature_points) :
+         n_points_1d);
+    // The cache key combines cell and order: assembly and error evaluation
+    // use different orders on the same cells.
+    const unsigned int key = cell->active_cell_index() * 32 + n;
+    const auto         it  = special_rules.find(key);
+    if (it != special_rules.end())
+      return &it->second;
+
+    const std::vector<double> lsn = vertex_values(cell, true);
+    Quadrature<dim>           rule;
+    if (kind == CellKind::split)
+      rule = CellQuadrature::cut_cell_rule<dim>(lsn, n).first;
+    else
+      rule = CellQuadrature::tip_cell_rule<dim>(lsn,
+                                                vertex_values(cell, false),
+                                                n);
+    return &special_rules.emplace(key, std::move(rule)).first->second;
   }
 
 
@@ -491,19 +642,8 @@ namespace xcrack
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     const unsigned int                                    n_points_1d) const
   {
-    // The cache key combines cell and order: assembly and error evaluation
-    // use different orders on the same cells.
-    const unsigned int key = cell->active_cell_index() * 16 + n_points_1d;
-    const auto         it  = split_rules.find(key);
-    if (it != split_rules.end())
-      return it->second;
-
-    std::vector<double> values;
-    for (const unsigned int v : cell->vertex_indices())
-      values.push_back(crack.lsn(cell->vertex(v)));
-    return split_rules
-      .emplace(key, cut_cell_rule<dim>(values, n_points_1d).first)
-      .first->second;
+    Assert(is_split(cell), ExcMessage("Not a split cell."));
+    return *special_quadrature(cell, n_points_1d);
   }
 
 

@@ -2,6 +2,7 @@
 #define xcrack_xfem_enrichment_h
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/quadrature.h>
 
 #include <deal.II/dofs/dof_handler.h>
@@ -9,6 +10,7 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <xcrack/crack/crack_geometry.h>
+#include <xcrack/xfem/branch_functions.h>
 
 #include <map>
 #include <memory>
@@ -44,36 +46,78 @@ namespace xcrack
 
 
   /**
-   * The X-FEM enrichment of the displacement space by the jump of a crack
-   * (Heaviside enrichment).
+   * The choices of `subsection Enrichment`: which nodes get which functions
+   * and how the cells the front touches are integrated.
+   */
+  struct EnrichmentParameters
+  {
+    /// Which nodes carry the crack-tip branch functions.
+    enum class TipZone
+    {
+      /// None: the crack is represented by its jump only, and the cells
+      /// the front touches are not enriched (energy error ~ h^(1/2)).
+      none,
+      /// The nodes of the cells the front touches (error still ~ h^(1/2),
+      /// but a far smaller constant).
+      topological,
+      /// Also every node within `Enrichment radius` of the front: the
+      /// optimal rate h^1 for Q1, at the cost of a zone of enriched DoFs
+      /// that does not shrink with h (and of conditioning).
+      geometric
+    };
+
+    double       heaviside_volume_tolerance = 1e-9;
+    TipZone      tip_zone                   = TipZone::topological;
+    double       radius                     = 0;
+    unsigned int tip_quadrature_points      = 6;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Read the entries; InputError names a radius that does not fit the
+    /// zone choice.
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+
+
+  /**
+   * The X-FEM enrichment of the displacement space by a crack: the jump
+   * (Heaviside) function H on the nodes whose support the crack cuts, and
+   * the four branch functions F1..F4 (BranchFunction) on the nodes of the
+   * crack-tip zone.
    *
    * The finite element space is an hp::FECollection of
-   * FESystem(FE_Enriched(FE_Q(p), FE_Q(p), H), dim) elements: index 0 has
-   * no enrichment (a dominating FE_Nothing fills the enrichment slot, so
-   * enriched DoFs vanish where enriched and plain cells meet), index 1 is
-   * enriched by H. This nesting is the one that works with hanging nodes
-   * and hp interfaces in deal.II 9.4 (DESIGN.md, pitfalls).
+   * FESystem(FE_Enriched(FE_Q(p), {FE_Q(p), FE_Q(1)}, {{H}, {F1..F4}}), dim)
+   * elements that all share this structure; a dominating FE_Nothing fills
+   * the slots a cell does not use (so enriched DoFs vanish where cells of
+   * different kinds meet). Index = plain (0), heaviside (1), tip (2), both
+   * (3). This nesting is the one that works with hanging nodes and hp
+   * interfaces in deal.II 9.4 (DESIGN.md, pitfalls). The branch functions
+   * multiply Q1 shape functions also for Q2: they carry the singularity,
+   * and only vertex DoFs make the Dirichlet treatment at the front simple.
    *
    * Cells are classified from the level sets at their vertices:
    *
-   * - split: lsn changes sign and lst < 0 at every vertex (the crack runs
-   *   through the cell);
-   * - tip: lsn and lst both change sign (the front is in the cell);
+   * - tip: the front {lsn = 0, lst = 0} of the Q1 interpolants touches the
+   *   closed cell (CellQuadrature::front_points), also when the front runs
+   *   through a vertex or along an edge;
+   * - split: otherwise lsn changes sign and its zero set lies on the crack
+   *   (lst < 0 where it crosses the cell's edges);
    * - plain: everything else.
    *
-   * A DoF is enriched if the support of its shape function contains a split
-   * cell and no tip cell. Cells carry index 1 when any of their vertices
-   * touches a split cell, and the enriched DoFs of such a cell that are not
+   * A node is tip-enriched if it is a vertex of a tip cell or (geometric
+   * zone) lies within the enrichment radius of the front, r = sqrt(lsn^2 +
+   * lst^2) <= radius. It is Heaviside-enriched if its support contains a
+   * split cell and it is neither tip-enriched nor a vertex of a tip cell.
+   * The enriched DoFs of cells with an enriched element that are not
    * enriched are constrained to zero: an unconstrained N_j H with H constant
    * on supp N_j would copy N_j and make the matrix singular.
    *
    * Split cells are integrated by a rule that is exact on each side of the
-   * crack (deal.II's NonMatching::QuadratureGenerator on the Q1 interpolant
-   * of lsn), cached per cell.
-   *
-   * Not yet: the crack-tip (branch function) enrichment, several cracks, a
-   * crack mouth on a Dirichlet boundary, and the conditioning treatment of
-   * cuts close to nodes.
+   * crack, tip cells by the fan rule of CellQuadrature::tip_cell_rule; both
+   * are cached per cell.
    */
   template <int dim>
   class Enrichment
@@ -81,20 +125,19 @@ namespace xcrack
   public:
     static constexpr unsigned int plain     = 0;
     static constexpr unsigned int heaviside = 1;
+    static constexpr unsigned int tip       = 2;
+    static constexpr unsigned int both      = 3;
 
-    /**
-     * Enrich the displacement space of degree @p degree by the jump of
-     * @p crack. A vertex is not enriched when the smaller side of its
-     * support, cut by the crack, holds less than @p volume_tolerance of the
-     * support's volume (the cut is too close to the vertex: its enriched
-     * function would nearly copy the standard one).
-     */
-    Enrichment(const CrackGeometry<dim> &crack,
-               const unsigned int        degree,
-               const double              volume_tolerance);
+    /// Enrich the displacement space of degree @p degree by @p crack.
+    Enrichment(const CrackGeometry<dim>   &crack,
+               const unsigned int          degree,
+               const EnrichmentParameters &parameters);
 
     const hp::FECollection<dim> &
     get_fe_collection() const;
+
+    const EnrichmentParameters &
+    get_parameters() const;
 
     /**
      * Classify the cells of @p dof_handler's mesh (owned and ghost) and set
@@ -116,16 +159,36 @@ namespace xcrack
     static bool
     is_enriched_dof(const FiniteElement<dim> &fe, const unsigned int i);
 
+    /**
+     * The function that multiplies the shape function of local DoF @p i of
+     * @p fe: H or one of F1..F4; nullptr for a standard DoF.
+     */
+    const Function<dim> *
+    enrichment_function(const FiniteElement<dim> &fe,
+                        const unsigned int        i) const;
+
     /// Whether @p cell is split by the crack (and has a special rule).
     bool
     is_split(const typename DoFHandler<dim>::active_cell_iterator &cell) const;
 
+    /// Whether the crack front touches @p cell (and it has a special rule).
+    bool
+    is_tip(const typename DoFHandler<dim>::active_cell_iterator &cell) const;
+
     /**
-     * The quadrature rule of a split cell, exact for polynomials of degree
-     * 2 @p n_points_1d - 1 on each side of the crack (in reference
-     * coordinates). Built on first use and cached until the next
+     * The quadrature rule of a split or tip cell (reference coordinates), or
+     * nullptr for a cell a Gauss rule integrates. Split cells: exact for
+     * polynomials of degree 2 @p n_points_1d - 1 on each side of the crack.
+     * Tip cells: the fan rule with at least `Tip quadrature points` points
+     * per direction. Built on first use and cached until the next
      * set_fe_indices().
      */
+    const Quadrature<dim> *
+    special_quadrature(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      const unsigned int                                    n_points_1d) const;
+
+    /// The quadrature of split cells (see special_quadrature()).
     const Quadrature<dim> &
     split_cell_quadrature(
       const typename DoFHandler<dim>::active_cell_iterator &cell,
@@ -143,15 +206,25 @@ namespace xcrack
       tip
     };
 
-    const CrackGeometry<dim> &crack;
-    const double              volume_tolerance;
-    HeavisideFunction<dim>    heaviside_function;
-    hp::FECollection<dim>     fe_collection;
-    std::vector<CellKind>     cell_kind;
-    /// Whether the functions of each vertex are enriched (vertices of the
-    /// owned and ghost cells).
-    std::vector<bool>                               enriched_vertex;
-    mutable std::map<unsigned int, Quadrature<dim>> split_rules;
+    /// 0 for a standard DoF, 1 for a Heaviside one, 2 for a branch one.
+    static unsigned int
+    slot(const FiniteElement<dim> &fe, const unsigned int i);
+
+    std::vector<double>
+    vertex_values(const typename Triangulation<dim>::cell_iterator &cell,
+                  const bool normal) const;
+
+    const CrackGeometry<dim>                      &crack;
+    const EnrichmentParameters                     parameters;
+    HeavisideFunction<dim>                         heaviside_function;
+    std::vector<std::unique_ptr<BranchFunction<dim>>> branch_functions;
+    hp::FECollection<dim>                          fe_collection;
+    std::vector<CellKind>                          cell_kind;
+    /// Whether the functions of each vertex are enriched by H, by F1..F4
+    /// (vertices of the owned and ghost cells).
+    std::vector<bool>                               heaviside_vertex;
+    std::vector<bool>                               tip_vertex;
+    mutable std::map<unsigned int, Quadrature<dim>> special_rules;
   };
 } // namespace xcrack
 

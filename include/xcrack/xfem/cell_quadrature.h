@@ -1,0 +1,76 @@
+#ifndef xcrack_xfem_cell_quadrature_h
+#define xcrack_xfem_cell_quadrature_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/quadrature.h>
+
+#include <utility>
+#include <vector>
+
+namespace xcrack
+{
+  using namespace dealii;
+
+  /**
+   * Quadrature rules on the reference cell [0,1]^dim for the cells an X-FEM
+   * crack passes through. The crack is described by the Q1 interpolants of
+   * its level sets, given by their values at the cell's vertices (deal.II's
+   * vertex numbering): lsn (normal) and lst (tangent, negative on the
+   * crack).
+   */
+  namespace CellQuadrature
+  {
+    /**
+     * The rule of a cell cut by the zero set of lsn: Gauss rules of
+     * @p n_points_1d points per direction on each side (deal.II's
+     * NonMatching::QuadratureGenerator), joined. Also returns the reference
+     * volume of the negative side.
+     */
+    template <int dim>
+    std::pair<Quadrature<dim>, double>
+    cut_cell_rule(const std::vector<double> &lsn,
+                  const unsigned int         n_points_1d);
+
+    /**
+     * The points where the crack front {lsn = 0, lst = 0} meets the closed
+     * reference cell: in 2D the tip (if it lies in the cell), in 3D the
+     * points where the front crosses the cell's faces. A front that runs
+     * inside a face or along an edge contributes the ends of that piece.
+     * Empty when the front does not touch the cell.
+     */
+    template <int dim>
+    std::vector<Point<dim>>
+    front_points(const std::vector<double> &lsn, const std::vector<double> &lst);
+
+    /**
+     * The rule of a cell the crack front touches, built to integrate the
+     * crack-tip fields: their gradients grow like r^(-1/2) toward the front,
+     * and the lips (lsn = 0, lst < 0) carry a jump.
+     *
+     * In 2D the cell is split into triangles that fan out from the tip to
+     * its boundary, with the points where lsn = 0 leaves the cell among the
+     * triangles' corners so that no triangle straddles a lip. Each triangle
+     * is mapped from the unit square by a Duffy collapse at the tip, whose
+     * radial coordinate is graded as u = s^2: the Jacobian then contributes
+     * r ~ s^2 ds, which cancels the 1/r of the products of two singular
+     * gradients, and the integrands of the stiffness matrix become smooth
+     * in (s, v). @p n_points_1d Gauss points per direction and triangle.
+     *
+     * In 3D the cell is cut into slices normal to the reference axis the
+     * front runs most nearly along; each slice carries the 2D rule above
+     * about the point where the front crosses it (or the cut rule when it
+     * does not). The axis is split where the front leaves through a side
+     * face, so that the integrand is smooth along it within each piece;
+     * @p n_points_1d Gauss points along each piece.
+     *
+     * Falls back to the cut rule where the front does not touch the cell.
+     */
+    template <int dim>
+    Quadrature<dim>
+    tip_cell_rule(const std::vector<double> &lsn,
+                  const std::vector<double> &lst,
+                  const unsigned int         n_points_1d);
+  } // namespace CellQuadrature
+} // namespace xcrack
+
+#endif

@@ -1,0 +1,110 @@
+#include <xcrack/xfem/branch_functions.h>
+
+#include <cmath>
+
+namespace xcrack
+{
+  template <int dim>
+  BranchFunction<dim>::BranchFunction(const CrackGeometry<dim> &crack,
+                                      const unsigned int        index)
+    : crack(crack)
+    , index(index)
+  {
+    AssertIndexRange(index, n_functions);
+  }
+
+
+
+  namespace
+  {
+    /// theta = atan2(lsn, lst) with lsn = 0 counted on the + side (+pi on
+    /// the lips), whatever the sign of the zero.
+    double
+    polar_angle(const double lsn, const double lst)
+    {
+      return std::atan2(lsn == 0 ? 0. : lsn, lst);
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  std::array<double, 3>
+  BranchFunction<dim>::polar_values(const double r, const double theta) const
+  {
+    const double sqrt_r = std::sqrt(r);
+    const double s2 = std::sin(theta / 2), c2 = std::cos(theta / 2);
+    const double s = std::sin(theta), c = std::cos(theta);
+    double       f = 0, df_dtheta = 0;
+    switch (index)
+      {
+        case 0:
+          f         = s2;
+          df_dtheta = 0.5 * c2;
+          break;
+        case 1:
+          f         = c2;
+          df_dtheta = -0.5 * s2;
+          break;
+        case 2:
+          f         = s2 * s;
+          df_dtheta = 0.5 * c2 * s + s2 * c;
+          break;
+        default:
+          f         = c2 * s;
+          df_dtheta = -0.5 * s2 * s + c2 * c;
+          break;
+      }
+    // F = sqrt(r) f(theta): dF/dr = F / (2r).
+    return {{sqrt_r * f,
+             (r > 0 ? 0.5 * f / sqrt_r : 0.),
+             sqrt_r * df_dtheta}};
+  }
+
+
+
+  template <int dim>
+  double
+  BranchFunction<dim>::value(const Point<dim> &p, const unsigned int) const
+  {
+    const double n = crack.lsn(p), t = crack.lst(p);
+    return polar_values(std::hypot(n, t), polar_angle(n, t))[0];
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  BranchFunction<dim>::gradient(const Point<dim> &p, const unsigned int) const
+  {
+    const double n = crack.lsn(p), t = crack.lst(p);
+    const double r = std::hypot(n, t);
+    if (r == 0)
+      return Tensor<1, dim>(); // singular; quadrature points avoid the front
+
+    // Central differences of the level sets, with a step relative to the
+    // size of the coordinates (smooth functions: error ~ h^2).
+    double scale = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      scale = std::max(scale, std::abs(p[d]));
+    const double   h = 1e-6 * scale;
+    Tensor<1, dim> grad_n, grad_t;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        Point<dim> plus = p, minus = p;
+        plus[d] += h;
+        minus[d] -= h;
+        grad_n[d] = (crack.lsn(plus) - crack.lsn(minus)) / (2 * h);
+        grad_t[d] = (crack.lst(plus) - crack.lst(minus)) / (2 * h);
+      }
+    const auto values = polar_values(r, polar_angle(n, t));
+    const Tensor<1, dim> grad_r     = (n * grad_n + t * grad_t) / r;
+    const Tensor<1, dim> grad_theta = (t * grad_n - n * grad_t) / (r * r);
+    return values[1] * grad_r + values[2] * grad_theta;
+  }
+
+
+
+  template class BranchFunction<2>;
+  template class BranchFunction<3>;
+} // namespace xcrack

@@ -1,0 +1,490 @@
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/function.h>
+#include <deal.II/base/geometry_info.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/hp/q_collection.h>
+#include <deal.II/non_matching/quadrature_generator.h>
+
+#include <xcrack/xfem/cell_quadrature.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+
+namespace xcrack
+{
+  namespace CellQuadrature
+  {
+    namespace
+    {
+      /**
+       * The Q1 interpolant of vertex values on the reference cell, with the
+       * value, gradient and Hessian the quadrature generator asks for.
+       */
+      template <int dim>
+      class ReferenceCellLevelSet : public Function<dim>
+      {
+      public:
+        explicit ReferenceCellLevelSet(const std::vector<double> &vertex_values)
+          : vertex_values(vertex_values)
+        {}
+
+        double
+        value(const Point<dim> &p, const unsigned int = 0) const override
+        {
+          double v = 0;
+          for (unsigned int i = 0; i < vertex_values.size(); ++i)
+            v += vertex_values[i] * q1.shape_value(i, p);
+          return v;
+        }
+
+        Tensor<1, dim>
+        gradient(const Point<dim> &p, const unsigned int = 0) const override
+        {
+          Tensor<1, dim> g;
+          for (unsigned int i = 0; i < vertex_values.size(); ++i)
+            g += vertex_values[i] * q1.shape_grad(i, p);
+          return g;
+        }
+
+        SymmetricTensor<2, dim>
+        hessian(const Point<dim> &p, const unsigned int = 0) const override
+        {
+          Tensor<2, dim> h;
+          for (unsigned int i = 0; i < vertex_values.size(); ++i)
+            h += vertex_values[i] * q1.shape_grad_grad(i, p);
+          return symmetrize(h);
+        }
+
+      private:
+        // FE_Q(1) numbers its shape functions like the cell's vertices.
+        const FE_Q<dim>     q1{1};
+        std::vector<double> vertex_values;
+      };
+
+      using Square = std::array<double, 4>; // values at (0,0),(1,0),(0,1),(1,1)
+
+      double
+      bilinear(const Square &f, const Point<2> &p)
+      {
+        return f[0] + (f[1] - f[0]) * p[0] + (f[2] - f[0]) * p[1] +
+               (f[0] - f[1] - f[2] + f[3]) * p[0] * p[1];
+      }
+
+      double
+      max_abs(const Square &f)
+      {
+        double m = 0;
+        for (const double v : f)
+          m = std::max(m, std::abs(v));
+        return m;
+      }
+
+      /// The corners of the unit square counterclockwise, as vertex indices.
+      constexpr std::array<unsigned int, 4> ccw_corners = {{0, 1, 3, 2}};
+
+      Point<2>
+      corner(const unsigned int vertex)
+      {
+        return Point<2>(vertex % 2, vertex / 2);
+      }
+
+      void
+      add_unique(std::vector<Point<2>> &points, const Point<2> &p)
+      {
+        for (const auto &q : points)
+          if (q.distance(p) < 1e-10)
+            return;
+        points.push_back(p);
+      }
+
+      /// Where f vanishes on the boundary of the square (a whole edge on
+      /// which it vanishes contributes its two ends).
+      std::vector<Point<2>>
+      boundary_zeros(const Square &f)
+      {
+        std::vector<Point<2>> points;
+        for (unsigned int e = 0; e < 4; ++e)
+          {
+            const unsigned int a = ccw_corners[e], b = ccw_corners[(e + 1) % 4];
+            if (f[a] == 0)
+              add_unique(points, corner(a));
+            if (f[a] * f[b] < 0)
+              add_unique(points,
+                         corner(a) + f[a] / (f[a] - f[b]) *
+                                       (corner(b) - corner(a)));
+          }
+        return points;
+      }
+
+      /**
+       * The common zeros of two bilinear functions on the closed unit square.
+       * Eliminating y from f = (a0 + a1 x) + (a2 + a3 x) y = 0 and the same
+       * for g leaves a quadratic in x. When one of them vanishes identically
+       * (a face in the crack plane), the zeros of the other on the boundary
+       * stand for the curve it leaves.
+       */
+      std::vector<Point<2>>
+      common_zeros(Square f, Square g)
+      {
+        const double scale = std::max(max_abs(f), max_abs(g));
+        if (scale == 0)
+          return {};
+        for (unsigned int i = 0; i < 4; ++i)
+          {
+            f[i] /= scale;
+            g[i] /= scale;
+          }
+        constexpr double zero = 1e-12;
+        if (max_abs(f) <= zero)
+          return boundary_zeros(g);
+        if (max_abs(g) <= zero)
+          return boundary_zeros(f);
+
+        const double a0 = f[0], a1 = f[1] - f[0], a2 = f[2] - f[0],
+                     a3 = f[0] - f[1] - f[2] + f[3];
+        const double b0 = g[0], b1 = g[1] - g[0], b2 = g[2] - g[0],
+                     b3 = g[0] - g[1] - g[2] + g[3];
+        const double c2 = a1 * b3 - b1 * a3;
+        const double c1 = a0 * b3 + a1 * b2 - b0 * a3 - b1 * a2;
+        const double c0 = a0 * b2 - b0 * a2;
+
+        std::vector<double> roots;
+        const double        c_max =
+          std::max({std::abs(c0), std::abs(c1), std::abs(c2)});
+        if (c_max <= zero)
+          return {}; // f and g proportional: no isolated crossing
+        if (std::abs(c2) <= zero * c_max)
+          roots.push_back(-c0 / c1);
+        else
+          {
+            double disc = c1 * c1 - 4 * c2 * c0;
+            if (disc < 0 && disc > -zero * c_max * c_max)
+              disc = 0;
+            if (disc >= 0)
+              {
+                // The numerically stable pair of roots.
+                const double q =
+                  -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
+                roots.push_back(q / c2);
+                if (q != 0)
+                  roots.push_back(c0 / q);
+              }
+          }
+
+        constexpr double      tol = 1e-10;
+        std::vector<Point<2>> points;
+        for (double x : roots)
+          {
+            if (!(x >= -tol && x <= 1 + tol))
+              continue;
+            x                = std::clamp(x, 0., 1.);
+            const double fa  = a2 + a3 * x;
+            const double ga  = b2 + b3 * x;
+            const bool   use = std::abs(fa) >= std::abs(ga);
+            if (std::max(std::abs(fa), std::abs(ga)) <= zero)
+              continue; // both independent of y here
+            double y = (use ? -(a0 + a1 * x) / fa : -(b0 + b1 * x) / ga);
+            if (!(y >= -tol && y <= 1 + tol))
+              continue;
+            y = std::clamp(y, 0., 1.);
+            const Point<2> p(x, y);
+            if (std::abs(bilinear(f, p)) <= 1e-8 &&
+                std::abs(bilinear(g, p)) <= 1e-8)
+              add_unique(points, p);
+          }
+        return points;
+      }
+
+      Square
+      square_of(const std::vector<double> &values)
+      {
+        return {{values[0], values[1], values[2], values[3]}};
+      }
+
+      /**
+       * The fan of triangles from @p tip to the boundary of the unit square,
+       * with the boundary points where lsn changes sign among the corners,
+       * each integrated by a Duffy collapse at the tip graded as u = s^2.
+       */
+      Quadrature<2>
+      fan_rule(const Point<2>     &tip,
+               const Square       &lsn,
+               const unsigned int  n_points_1d)
+      {
+        std::vector<Point<2>> polygon;
+        for (unsigned int e = 0; e < 4; ++e)
+          {
+            const unsigned int a = ccw_corners[e], b = ccw_corners[(e + 1) % 4];
+            polygon.push_back(corner(a));
+            if (lsn[a] * lsn[b] < 0)
+              polygon.push_back(corner(a) + lsn[a] / (lsn[a] - lsn[b]) *
+                                              (corner(b) - corner(a)));
+          }
+
+        const QGauss<1>         gauss(n_points_1d);
+        std::vector<Point<2>>   points;
+        std::vector<double>     weights;
+        for (unsigned int k = 0; k < polygon.size(); ++k)
+          {
+            const Point<2>     &a = polygon[k];
+            const Point<2>     &b = polygon[(k + 1) % polygon.size()];
+            const Tensor<1, 2> ta = a - tip, ab = b - a;
+            const double area = 0.5 * (ta[0] * (b - tip)[1] - ta[1] * (b - tip)[0]);
+            if (area <= 1e-14)
+              continue; // the tip lies on this piece of the boundary
+            for (unsigned int i = 0; i < n_points_1d; ++i)
+              for (unsigned int j = 0; j < n_points_1d; ++j)
+                {
+                  const double s = gauss.point(i)[0];
+                  const double v = gauss.point(j)[0];
+                  const double u = s * s;
+                  points.push_back(tip + u * ta + u * v * ab);
+                  weights.push_back(4 * area * s * s * s * gauss.weight(i) *
+                                    gauss.weight(j));
+                }
+          }
+        return Quadrature<2>(points, weights);
+      }
+
+      /// The vertex of the unit cube with the given coordinate bits.
+      unsigned int
+      cube_vertex(const std::array<unsigned int, 3> &bits)
+      {
+        return bits[0] + 2 * bits[1] + 4 * bits[2];
+      }
+
+      /// Gradient of the trilinear interpolant of @p values at @p p.
+      Tensor<1, 3>
+      trilinear_gradient(const std::vector<double> &values, const Point<3> &p)
+      {
+        static const FE_Q<3> q1(1);
+        Tensor<1, 3>         g;
+        for (unsigned int i = 0; i < 8; ++i)
+          g += values[i] * q1.shape_grad(i, p);
+        return g;
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    std::pair<Quadrature<dim>, double>
+    cut_cell_rule(const std::vector<double> &lsn, const unsigned int n_points_1d)
+    {
+      const ReferenceCellLevelSet<dim>      level_set(lsn);
+      const hp::QCollection<1>              q1d(QGauss<1>{n_points_1d});
+      NonMatching::QuadratureGenerator<dim> generator(q1d);
+      Point<dim>                            upper;
+      for (unsigned int d = 0; d < dim; ++d)
+        upper[d] = 1;
+      generator.generate(level_set,
+                         BoundingBox<dim>(std::make_pair(Point<dim>(), upper)));
+
+      std::vector<Point<dim>> points;
+      std::vector<double>     weights;
+      for (const Quadrature<dim> *side : {&generator.get_inside_quadrature(),
+                                          &generator.get_outside_quadrature()})
+        {
+          points.insert(points.end(),
+                        side->get_points().begin(),
+                        side->get_points().end());
+          weights.insert(weights.end(),
+                         side->get_weights().begin(),
+                         side->get_weights().end());
+        }
+      const auto &inside = generator.get_inside_quadrature().get_weights();
+      return {Quadrature<dim>(points, weights),
+              std::accumulate(inside.begin(), inside.end(), 0.)};
+    }
+
+
+
+    namespace
+    {
+    std::vector<Point<2>>
+    front_points_2d(const std::vector<double> &lsn,
+                    const std::vector<double> &lst)
+    {
+      return common_zeros(square_of(lsn), square_of(lst));
+    }
+
+
+
+    std::vector<Point<3>>
+    front_points_3d(const std::vector<double> &lsn,
+                    const std::vector<double> &lst)
+    {
+      std::vector<Point<3>> points;
+      for (unsigned int d = 0; d < 3; ++d)
+        for (unsigned int side = 0; side < 2; ++side)
+          {
+            // The face x_d = side, with local coordinates (x_i, x_j), i < j.
+            const unsigned int i = (d == 0 ? 1 : 0), j = (d == 2 ? 1 : 2);
+            Square             f, g;
+            for (unsigned int a = 0; a < 2; ++a)
+              for (unsigned int b = 0; b < 2; ++b)
+                {
+                  std::array<unsigned int, 3> bits;
+                  bits[d]                   = side;
+                  bits[i]                   = a;
+                  bits[j]                   = b;
+                  f[a + 2 * b]              = lsn[cube_vertex(bits)];
+                  g[a + 2 * b]              = lst[cube_vertex(bits)];
+                }
+            for (const Point<2> &q : common_zeros(f, g))
+              {
+                Point<3> p;
+                p[d] = side;
+                p[i] = q[0];
+                p[j] = q[1];
+                bool known = false;
+                for (const auto &r : points)
+                  known = known || r.distance(p) < 1e-10;
+                if (!known)
+                  points.push_back(p);
+              }
+          }
+      return points;
+    }
+
+
+
+    Quadrature<2>
+    tip_cell_rule_2d(const std::vector<double> &lsn,
+                     const std::vector<double> &lst,
+                     const unsigned int         n_points_1d)
+    {
+      const std::vector<Point<2>> tips = front_points_2d(lsn, lst);
+      if (tips.empty())
+        return cut_cell_rule<2>(lsn, n_points_1d).first;
+      return fan_rule(tips[0], square_of(lsn), n_points_1d);
+    }
+
+
+
+    Quadrature<3>
+    tip_cell_rule_3d(const std::vector<double> &lsn,
+                     const std::vector<double> &lst,
+                     const unsigned int         n_points_1d)
+    {
+      const std::vector<Point<3>> crossings = front_points_3d(lsn, lst);
+      if (crossings.empty())
+        return cut_cell_rule<3>(lsn, n_points_1d).first;
+
+      // The axis the front runs most nearly along: its tangent is normal to
+      // both level-set gradients.
+      Point<3> centre;
+      for (const auto &p : crossings)
+        centre += p / static_cast<double>(crossings.size());
+      const Tensor<1, 3> tangent =
+        cross_product_3d(trilinear_gradient(lsn, centre),
+                         trilinear_gradient(lst, centre));
+      unsigned int k = 2;
+      for (unsigned int d = 0; d < 3; ++d)
+        if (std::abs(tangent[d]) > std::abs(tangent[k]))
+          k = d;
+      const unsigned int i = (k == 0 ? 1 : 0), j = (k == 2 ? 1 : 2);
+
+      // Break the axis where the front enters or leaves a slice.
+      std::vector<double> breaks = {0., 1.};
+      for (const auto &p : crossings)
+        breaks.push_back(p[k]);
+      std::sort(breaks.begin(), breaks.end());
+
+      const QGauss<1>         gauss(n_points_1d);
+      std::vector<Point<3>>   points;
+      std::vector<double>     weights;
+      for (unsigned int b = 0; b + 1 < breaks.size(); ++b)
+        {
+          const double z0 = breaks[b], length = breaks[b + 1] - breaks[b];
+          if (length < 1e-10)
+            continue;
+          for (unsigned int q = 0; q < n_points_1d; ++q)
+            {
+              const double        zeta = z0 + length * gauss.point(q)[0];
+              std::vector<double> slice_lsn(4), slice_lst(4);
+              for (unsigned int a = 0; a < 2; ++a)
+                for (unsigned int c = 0; c < 2; ++c)
+                  {
+                    std::array<unsigned int, 3> bits;
+                    bits[i]                     = a;
+                    bits[j]                     = c;
+                    bits[k]                     = 0;
+                    const unsigned int low      = cube_vertex(bits);
+                    bits[k]                     = 1;
+                    const unsigned int high     = cube_vertex(bits);
+                    slice_lsn[a + 2 * c] =
+                      (1 - zeta) * lsn[low] + zeta * lsn[high];
+                    slice_lst[a + 2 * c] =
+                      (1 - zeta) * lst[low] + zeta * lst[high];
+                  }
+              const Quadrature<2> slice =
+                tip_cell_rule_2d(slice_lsn, slice_lst, n_points_1d);
+              for (unsigned int s = 0; s < slice.size(); ++s)
+                {
+                  Point<3> p;
+                  p[i] = slice.point(s)[0];
+                  p[j] = slice.point(s)[1];
+                  p[k] = zeta;
+                  points.push_back(p);
+                  weights.push_back(length * gauss.weight(q) *
+                                    slice.weight(s));
+                }
+            }
+        }
+      return Quadrature<3>(points, weights);
+    }
+    } // namespace
+
+
+
+    template <int dim>
+    std::vector<Point<dim>>
+    front_points(const std::vector<double> &lsn, const std::vector<double> &lst)
+    {
+      AssertDimension(lsn.size(), GeometryInfo<dim>::vertices_per_cell);
+      AssertDimension(lst.size(), GeometryInfo<dim>::vertices_per_cell);
+      if constexpr (dim == 2)
+        return front_points_2d(lsn, lst);
+      else
+        return front_points_3d(lsn, lst);
+    }
+
+
+
+    template <int dim>
+    Quadrature<dim>
+    tip_cell_rule(const std::vector<double> &lsn,
+                  const std::vector<double> &lst,
+                  const unsigned int         n_points_1d)
+    {
+      if constexpr (dim == 2)
+        return tip_cell_rule_2d(lsn, lst, n_points_1d);
+      else
+        return tip_cell_rule_3d(lsn, lst, n_points_1d);
+    }
+
+
+
+    template std::vector<Point<2>>
+    front_points<2>(const std::vector<double> &, const std::vector<double> &);
+    template std::vector<Point<3>>
+    front_points<3>(const std::vector<double> &, const std::vector<double> &);
+    template Quadrature<2>
+    tip_cell_rule<2>(const std::vector<double> &,
+                     const std::vector<double> &,
+                     const unsigned int);
+    template Quadrature<3>
+    tip_cell_rule<3>(const std::vector<double> &,
+                     const std::vector<double> &,
+                     const unsigned int);
+    template std::pair<Quadrature<2>, double>
+    cut_cell_rule<2>(const std::vector<double> &, const unsigned int);
+    template std::pair<Quadrature<3>, double>
+    cut_cell_rule<3>(const std::vector<double> &, const unsigned int);
+  } // namespace CellQuadrature
+} // namespace xcrack
