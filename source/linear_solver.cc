@@ -5,6 +5,10 @@
 
 #include <xcrack/linear_solver.h>
 
+#include <Amesos_Mumps.h>
+#include <Epetra_LinearProblem.h>
+#include <Teuchos_ParameterList.hpp>
+
 #include <stdexcept>
 
 namespace xcrack
@@ -47,6 +51,59 @@ namespace xcrack
 
 
 
+  void
+  LinearSolver::solve_direct(const TrilinosWrappers::SparseMatrix &matrix,
+                             TrilinosWrappers::MPI::Vector        &x,
+                             const TrilinosWrappers::MPI::Vector  &rhs) const
+  {
+    // Amesos directly rather than deal.II's SolverDirect: MUMPS needs its
+    // parameters set. The matrix is symmetric positive definite (the
+    // constraints are condensed symmetrically): an LDL^T factorisation of
+    // one triangle halves time and memory. MUMPS estimates its workspace
+    // before factorising, and enriched matrices (dense blocks at the front)
+    // can exceed the estimate (INFOG(1) = -9): retry with more room.
+    Epetra_LinearProblem problem(
+      const_cast<Epetra_CrsMatrix *>(&matrix.trilinos_matrix()),
+      &x.trilinos_vector(),
+      const_cast<Epetra_MultiVector *>(
+        static_cast<const Epetra_MultiVector *>(&rhs.trilinos_vector())));
+    int error = 0, info = 0;
+    for (int relaxation = 40; relaxation <= 640; relaxation *= 4)
+      {
+        Amesos_Mumps solver(problem);
+        solver.SetICNTL(14, relaxation);
+        solver.SetICNTL(4, 0); // MUMPS prints nothing; we report failures
+        Teuchos::ParameterList parameters;
+        parameters.set("MatrixProperty", "SPD");
+        solver.SetParameters(parameters);
+        error = solver.SymbolicFactorization();
+        if (error == 0)
+          error = solver.NumericFactorization();
+        if (error == 0)
+          error = solver.Solve();
+        info = solver.GetINFOG()[0];
+        if (error == 0 || info != -9)
+          break;
+      }
+    if (error == 0)
+      return;
+    if (info == -10)
+      throw std::runtime_error(
+        "the direct solver failed: the stiffness matrix is singular. "
+        "Check that the Dirichlet data fix every part of the body. With a "
+        "crack, supports cut very close to a node can do this: raise "
+        "Enrichment/Heaviside volume tolerance.");
+    throw std::runtime_error(
+      "the direct solver (MUMPS) failed with INFOG(1) = " +
+      std::to_string(info) +
+      (info == -9 || info == -8 || info == -13 || info == -19 ?
+         ": it ran out of memory; use fewer cells or Linear solver/Type = "
+         "cg amg." :
+         "; see the MUMPS manual."));
+  }
+
+
+
   unsigned int
   LinearSolver::solve(
     const TrilinosWrappers::SparseMatrix &matrix,
@@ -56,27 +113,7 @@ namespace xcrack
   {
     if (type == "direct")
       {
-        SolverControl                  control(1, 0);
-        TrilinosWrappers::SolverDirect solver(
-          control,
-          TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                         "Amesos_Mumps"));
-        try
-          {
-            solver.solve(matrix, x, rhs);
-          }
-        catch (const std::exception &)
-          {
-            // MUMPS reports a (numerically) singular matrix as an Amesos
-            // error code; say what that means for an xcrack run.
-            throw std::runtime_error(
-              "the direct solver failed: the stiffness matrix is singular. "
-              "Check that the Dirichlet data fix every part of the body. "
-              "With a crack this also happens when it passes exactly "
-              "through mesh nodes or very close to them (the conditioning "
-              "treatment of such cuts is not implemented yet): move the "
-              "crack slightly.");
-          }
+        solve_direct(matrix, x, rhs);
         return 1;
       }
 

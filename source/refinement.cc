@@ -95,9 +95,14 @@ namespace xcrack
         Vector<float>      indicators(triangulation.n_active_cells());
         const unsigned int max_degree =
           dof_handler.get_fe_collection().max_degree();
+        // One face rule per element of the (enriched) collection.
+        hp::QCollection<dim - 1> face_rules;
+        for (unsigned int i = 0; i < dof_handler.get_fe_collection().size();
+             ++i)
+          face_rules.push_back(QGauss<dim - 1>(max_degree + 1));
         KellyErrorEstimator<dim>::estimate(
           dof_handler,
-          hp::QCollection<dim - 1>(QGauss<dim - 1>(max_degree + 1)),
+          face_rules,
           {},
           solution,
           indicators,

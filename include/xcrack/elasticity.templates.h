@@ -20,6 +20,7 @@
 #include <xcrack/input_error.h>
 #include <xcrack/output.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -222,12 +223,34 @@ namespace xcrack
       std::vector<const Function<dim> *>   functions;
       /// Side of the crack (+1, -1) -> point just inside a face, data.
       std::map<int, std::pair<Point<dim>, double>> sides;
+      /// Points of the Dirichlet faces around the vertex, with the weight
+      /// (quadrature weight times the vertex's hat function) and the data.
+      std::vector<std::tuple<Point<dim>, double, double>> samples;
+      bool                                                branches = false;
     };
     std::map<types::global_dof_index, BoundaryNode> nodes; // by standard DoF
     std::set<types::global_dof_index>               partners;
+    // In the hp space a vertex carries one copy of its DoFs per element
+    // used around it; the hanging-node constraints tie the copies together
+    // (dof = other) or set enriched copies to zero next to plain cells.
+    // Work with the copy that stays free: invalid_dof_index if none does.
+    const auto free_copy = [&](types::global_dof_index dof) {
+      while (constraints.is_constrained(dof))
+        {
+          const auto *entries = constraints.get_constraint_entries(dof);
+          if (entries->size() != 1 || (*entries)[0].second != 1. ||
+              constraints.get_inhomogeneity(dof) != 0.)
+            return numbers::invalid_dof_index;
+          dof = (*entries)[0].first;
+        }
+      return dof;
+    };
     if (enrichment)
       {
         std::vector<types::global_dof_index> dofs;
+        const QGauss<dim - 1>                face_rule(3);
+        const FE_Q<dim - 1>                  face_q1(1);
+        Vector<double>                       g_sample(dim);
         for (const auto &cell : dof_handler.active_cell_iterators())
           if (!cell->is_artificial() &&
               cell->active_fe_index() != Enrichment<dim>::plain)
@@ -263,25 +286,58 @@ namespace xcrack
                           {
                             const unsigned int c =
                               fe.system_to_component_index(i).first;
+                            const types::global_dof_index standard =
+                              free_copy(dofs[i]);
                             if (!mask[c] ||
-                                Enrichment<dim>::is_enriched_dof(fe, i))
+                                Enrichment<dim>::is_enriched_dof(fe, i) ||
+                                standard == numbers::invalid_dof_index)
                               continue;
-                            BoundaryNode &node = nodes[dofs[i]];
-                            if (node.sides.empty())
-                              for (unsigned int j = v * per_vertex;
-                                   j < (v + 1) * per_vertex;
-                                   ++j)
-                                if (Enrichment<dim>::is_enriched_dof(fe, j) &&
-                                    fe.system_to_component_index(j).first ==
-                                      c &&
-                                    !constraints.is_constrained(dofs[j]))
-                                  {
-                                    node.enriched.push_back(dofs[j]);
-                                    node.functions.push_back(
-                                      enrichment->enrichment_function(fe, j));
-                                    partners.insert(dofs[j]);
-                                  }
+                            BoundaryNode &node = nodes[standard];
+                            for (unsigned int j = v * per_vertex;
+                                 j < (v + 1) * per_vertex;
+                                 ++j)
+                              {
+                                const types::global_dof_index a =
+                                  free_copy(dofs[j]);
+                                if (!Enrichment<dim>::is_enriched_dof(fe, j) ||
+                                    fe.system_to_component_index(j).first !=
+                                      c ||
+                                    a == numbers::invalid_dof_index ||
+                                    std::find(node.enriched.begin(),
+                                              node.enriched.end(),
+                                              a) != node.enriched.end())
+                                  continue;
+                                node.enriched.push_back(a);
+                                node.functions.push_back(
+                                  enrichment->enrichment_function(fe, j));
+                              }
+                            for (unsigned int j = v * per_vertex;
+                                 j < (v + 1) * per_vertex;
+                                 ++j)
+                              if (Enrichment<dim>::is_enriched_dof(fe, j))
+                                partners.insert(dofs[j]);
                             node.sides[side] = {x, g[c]};
+                            for (unsigned int q = 0; q < face_rule.size(); ++q)
+                              {
+                                Point<dim> y;
+                                for (const unsigned int w :
+                                     face->vertex_indices())
+                                  y += face_q1.shape_value(w,
+                                                           face_rule.point(q)) *
+                                       face->vertex(w);
+                                bc->second->vector_value(y, g_sample);
+                                node.samples.emplace_back(
+                                  y,
+                                  face_rule.weight(q) *
+                                    face_q1.shape_value(fv,
+                                                        face_rule.point(q)) *
+                                    face->measure(),
+                                  g_sample[c]);
+                              }
+                            for (const Function<dim> *f : node.functions)
+                              node.branches =
+                                node.branches ||
+                                dynamic_cast<const BranchFunction<dim> *>(f);
                           }
                       }
               }
@@ -321,6 +377,11 @@ namespace xcrack
                 continue;
               }
             const BoundaryNode &n = node->second;
+            if (n.branches)
+              {
+                constrain_by_local_fit(dof, n.enriched, n.functions, n.samples);
+                continue;
+              }
             // phi_j on each side, and the mean of the data.
             std::vector<double> mean(n.enriched.size(), 0.),
               jump(n.enriched.size(), 0.);
@@ -362,6 +423,61 @@ namespace xcrack
               }
           }
       }
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticityProblem<dim>::constrain_by_local_fit(
+    const types::global_dof_index                              standard,
+    const std::vector<types::global_dof_index>                &enriched,
+    const std::vector<const Function<dim> *>                  &functions,
+    const std::vector<std::tuple<Point<dim>, double, double>> &samples)
+  {
+    // Least squares on the node's boundary patch: minimise
+    // sum_q w_q (s + sum_j phi_j(x_q) a_j - g(x_q))^2 over (s, a), in
+    // variables scaled to unit diagonal, with a small Tikhonov term on the
+    // enriched ones: far from the front the branch functions are nearly
+    // affine on a patch and the fit would otherwise be ill-posed.
+    const unsigned int  m = 1 + enriched.size();
+    FullMatrix<double>  matrix(m, m);
+    Vector<double>      rhs(m), x(m);
+    std::vector<double> phi(m);
+    for (const auto &[point, weight, g] : samples)
+      {
+        phi[0] = 1;
+        for (unsigned int j = 1; j < m; ++j)
+          phi[j] = functions[j - 1]->value(point);
+        for (unsigned int i = 0; i < m; ++i)
+          {
+            rhs(i) += weight * phi[i] * g;
+            for (unsigned int j = 0; j < m; ++j)
+              matrix(i, j) += weight * phi[i] * phi[j];
+          }
+      }
+    std::vector<double> scale(m);
+    for (unsigned int i = 0; i < m; ++i)
+      scale[i] = (matrix(i, i) > 0 ? std::sqrt(matrix(i, i)) : 1.);
+    for (unsigned int i = 0; i < m; ++i)
+      {
+        rhs(i) /= scale[i];
+        for (unsigned int j = 0; j < m; ++j)
+          matrix(i, j) /= scale[i] * scale[j];
+        if (i > 0)
+          matrix(i, i) += 1e-6;
+      }
+    matrix.gauss_jordan();
+    matrix.vmult(x, rhs);
+
+    constraints.add_line(standard);
+    constraints.set_inhomogeneity(standard, x(0) / scale[0]);
+    for (unsigned int j = 1; j < m; ++j)
+      if (!constraints.is_constrained(enriched[j - 1]))
+        {
+          constraints.add_line(enriched[j - 1]);
+          constraints.set_inhomogeneity(enriched[j - 1], x(j) / scale[j]);
+        }
   }
 
 

@@ -1,5 +1,6 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/function.h>
+#include <deal.II/base/numbers.h>
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/base/quadrature_lib.h>
 
@@ -230,22 +231,36 @@ namespace xcrack
         std::vector<double>     weights;
         for (unsigned int k = 0; k < polygon.size(); ++k)
           {
-            const Point<2>     &a = polygon[k];
-            const Point<2>     &b = polygon[(k + 1) % polygon.size()];
-            const Tensor<1, 2> ta = a - tip, ab = b - a;
-            const double area = 0.5 * (ta[0] * (b - tip)[1] - ta[1] * (b - tip)[0]);
-            if (area <= 1e-14)
+            const Point<2> &a = polygon[k];
+            const Point<2> &b = polygon[(k + 1) % polygon.size()];
+            const double    cross =
+              (a - tip)[0] * (b - tip)[1] - (a - tip)[1] * (b - tip)[0];
+            if (cross <= 2e-14)
               continue; // the tip lies on this piece of the boundary
-            for (unsigned int i = 0; i < n_points_1d; ++i)
-              for (unsigned int j = 0; j < n_points_1d; ++j)
-                {
-                  const double s = gauss.point(i)[0];
-                  const double v = gauss.point(j)[0];
-                  const double u = s * s;
-                  points.push_back(tip + u * ta + u * v * ab);
-                  weights.push_back(4 * area * s * s * s * gauss.weight(i) *
-                                    gauss.weight(j));
-                }
+            // Along the edge the integrands vary like 1/distance to the tip:
+            // wide triangles are cut into pieces of at most 45 degrees seen
+            // from the tip, on which that is smooth enough for Gauss.
+            const double angle =
+              std::atan2(cross, (a - tip) * (b - tip));
+            const unsigned int pieces =
+              static_cast<unsigned int>(std::ceil(angle / (numbers::PI / 4)));
+            for (unsigned int p = 0; p < pieces; ++p)
+              {
+                const Point<2> a_p = a + (double(p) / pieces) * (b - a);
+                const Point<2> b_p = a + (double(p + 1) / pieces) * (b - a);
+                const Tensor<1, 2> ta = a_p - tip, ab = b_p - a_p;
+                const double area = 0.5 * cross / pieces;
+                for (unsigned int i = 0; i < n_points_1d; ++i)
+                  for (unsigned int j = 0; j < n_points_1d; ++j)
+                    {
+                      const double s = gauss.point(i)[0];
+                      const double v = gauss.point(j)[0];
+                      const double u = s * s;
+                      points.push_back(tip + u * ta + u * v * ab);
+                      weights.push_back(4 * area * s * s * s *
+                                        gauss.weight(i) * gauss.weight(j));
+                    }
+              }
           }
         return Quadrature<2>(points, weights);
       }
@@ -359,9 +374,21 @@ namespace xcrack
                      const unsigned int         n_points_1d)
     {
       const std::vector<Point<2>> tips = front_points_2d(lsn, lst);
-      if (tips.empty())
+      if (!tips.empty())
+        return fan_rule(tips[0], square_of(lsn), n_points_1d);
+      // A slice of a 3D tip cell the front does not cross but passes close
+      // to: fan out from where the crack plane leaves the slice nearest to
+      // the front (smallest |lst|), so that the near-singular integrands
+      // get the graded rule and no triangle straddles the lips.
+      const std::vector<Point<2>> crossings = boundary_zeros(square_of(lsn));
+      if (crossings.size() < 2)
         return cut_cell_rule<2>(lsn, n_points_1d).first;
-      return fan_rule(tips[0], square_of(lsn), n_points_1d);
+      Point<2> centre = crossings[0];
+      for (const auto &p : crossings)
+        if (std::abs(bilinear(square_of(lst), p)) <
+            std::abs(bilinear(square_of(lst), centre)))
+          centre = p;
+      return fan_rule(centre, square_of(lsn), n_points_1d);
     }
 
 
