@@ -74,20 +74,6 @@ namespace xcrack
     /// Dirichlet constraints, aware of enriched DoFs on the boundary.
     void
     make_dirichlet_constraints();
-    /**
-     * Dirichlet data at a boundary vertex with branch functions: fix the
-     * standard DoF @p standard and its enriched partners @p enriched (of
-     * @p functions) by a least-squares fit of the data @p samples (point,
-     * weight, value) on the Dirichlet faces around the vertex. A nodal
-     * condition alone would leave the branch DoFs free and the face free to
-     * deform between the nodes, near the front where it matters most.
-     */
-    void
-    constrain_by_local_fit(
-      const types::global_dof_index                              standard,
-      const std::vector<types::global_dof_index>                &enriched,
-      const std::vector<const Function<dim> *>                  &functions,
-      const std::vector<std::tuple<Point<dim>, double, double>> &samples);
     void
     assemble_system();
     unsigned int

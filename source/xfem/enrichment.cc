@@ -233,6 +233,7 @@ namespace xcrack
   {
     const Triangulation<dim> &tria = dof_handler.get_triangulation();
     cell_kind.assign(tria.n_active_cells(), CellKind::plain);
+    fraction_minus.assign(tria.n_active_cells(), 0.);
     special_rules.clear();
     const bool with_tips =
       parameters.tip_zone != EnrichmentParameters::TipZone::none;
@@ -287,16 +288,19 @@ namespace xcrack
             {
               // Not on the crack: the whole cell lies on one side of it.
               const double cell_side = crack.lsn(cell->center());
+              fraction_minus[cell->active_cell_index()] =
+                (cell_side >= 0 ? 0. : 1.);
               for (const unsigned int v : cell->vertex_indices())
                 (cell_side >= 0 ? volume_plus :
                                   volume_minus)[cell->vertex_index(v)] +=
                   cell->measure();
               continue;
             }
-          const double fraction_minus =
+          const double minus =
             (kind == CellKind::split ?
                CellQuadrature::cut_cell_rule<dim>(lsn, 2).second :
                0.5);
+          fraction_minus[cell->active_cell_index()] = minus;
           for (const unsigned int v : cell->vertex_indices())
             {
               const unsigned int index = cell->vertex_index(v);
@@ -304,8 +308,8 @@ namespace xcrack
                 true;
               directly_split[index] =
                 directly_split[index] || kind == CellKind::split;
-              volume_minus[index] += fraction_minus * cell->measure();
-              volume_plus[index] += (1 - fraction_minus) * cell->measure();
+              volume_minus[index] += minus * cell->measure();
+              volume_plus[index] += (1 - minus) * cell->measure();
             }
         }
 
@@ -526,12 +530,17 @@ namespace xcrack
     AffineConstraints<double> &constraints) const
   {
     // For every enriched non-vertex DoF (Q2 jump DoFs): does its support
-    // contain a split cell, a tip cell, a cell of the tip zone? All cells of
-    // the support of a DoF of an owned cell are owned or ghost, so the
-    // answer is complete where it is needed.
+    // contain a split cell, a tip cell, and how much of it lies on each side
+    // of the crack? All cells of the support of a DoF of an owned cell are
+    // owned or ghost, so the answer is complete where it is needed. (These
+    // DoFs are kept in the tip zone: in a cell with jump vertices on one
+    // side and branch vertices on the other, a Q2 vertex function and a Q1
+    // hat do not add up to one along the crack, and without the edge DoF
+    // the jump is lost there; measured: 0.52 instead of 0.013 energy error.)
     struct Support
     {
-      bool split = false, tip = false, zone = false;
+      bool   split = false, tip = false;
+      double plus = 0, minus = 0;
     };
     std::map<types::global_dof_index, Support> support;
     std::vector<types::global_dof_index>       dofs;
@@ -541,16 +550,16 @@ namespace xcrack
           dofs.resize(cell->get_fe().n_dofs_per_cell());
           cell->get_dof_indices(dofs);
           const CellKind kind = cell_kind[cell->active_cell_index()];
-          bool           zone = false;
-          for (const unsigned int v : cell->vertex_indices())
-            zone = zone || tip_vertex[cell->vertex_index(v)];
           for (unsigned int i = 0; i < dofs.size(); ++i)
             if (is_enriched_dof(cell->get_fe(), i))
               {
                 auto &s = support[dofs[i]];
                 s.split = s.split || kind == CellKind::split;
                 s.tip   = s.tip || kind == CellKind::tip;
-                s.zone  = s.zone || zone;
+                s.minus +=
+                  fraction_minus[cell->active_cell_index()] * cell->measure();
+                s.plus += (1 - fraction_minus[cell->active_cell_index()]) *
+                          cell->measure();
               }
         }
 
@@ -564,7 +573,6 @@ namespace xcrack
               auto &s = support[entry.first];
               s.split = s.split || flags.split;
               s.tip   = s.tip || flags.tip;
-              s.zone  = s.zone || flags.zone;
             }
 
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -589,8 +597,14 @@ namespace xcrack
                   i / fe.n_dofs_per_vertex())];
               else
                 {
+                  // As for vertices: the support must straddle the crack
+                  // by more than the volume tolerance (a Q2 edge DoF of a
+                  // cell whose face the crack runs along sees one side).
                   const Support &flags = support[dofs[i]];
-                  keep = flags.split && !flags.tip && !flags.zone;
+                  keep = flags.split && !flags.tip &&
+                         std::min(flags.plus, flags.minus) >
+                           parameters.heaviside_volume_tolerance *
+                             (flags.plus + flags.minus);
                 }
               if (!keep && !constraints.is_constrained(dofs[i]))
                 constraints.add_line(dofs[i]);

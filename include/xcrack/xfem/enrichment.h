@@ -220,6 +220,8 @@ namespace xcrack
     std::vector<std::unique_ptr<BranchFunction<dim>>> branch_functions;
     hp::FECollection<dim>                          fe_collection;
     std::vector<CellKind>                          cell_kind;
+    /// Fraction of each cell's volume on the negative side of the crack.
+    std::vector<double> fraction_minus;
     /// Whether the functions of each vertex are enriched by H, by F1..F4
     /// (vertices of the owned and ghost cells).
     std::vector<bool>                               heaviside_vertex;
