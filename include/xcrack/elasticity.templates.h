@@ -614,6 +614,14 @@ namespace xcrack
 
     pcout << "xcrack: " << dim << "D linear elasticity, Q" << degree
           << " elements, " << linear_solver.type << " solver" << std::endl;
+    // Bilinear elements lock as the material becomes incompressible: the
+    // answer stays finite but can be far off (Case 1 at nu = 0.499: 22 %
+    // energy error with Q1 on 10,772 DoFs, 0.4 % with Q2 on 35,944).
+    if (degree == 1 && material.poisson_ratio > 0.45)
+      pcout << "Warning: Poisson's ratio = " << material.poisson_ratio
+            << " with Degree = 1: bilinear elements lock when the material "
+               "is nearly incompressible; use Discretization/Degree = 2."
+            << std::endl;
     if (enrichment)
       {
         const auto &e = enrichment->get_parameters();

@@ -564,7 +564,7 @@ namespace xcrack
         }
 
     // A hanging DoF passes what its support contains to the DoFs it is
-    // constrained to: their functions reach its cells.
+    // constrained to: their functions reach its cells (its volumes once).
     for (unsigned int pass = 0; pass < 2; ++pass)
       for (const auto &[dof, flags] : support)
         if (constraints.is_constrained(dof))
@@ -573,6 +573,11 @@ namespace xcrack
               auto &s = support[entry.first];
               s.split = s.split || flags.split;
               s.tip   = s.tip || flags.tip;
+              if (pass == 0)
+                {
+                  s.plus += flags.plus;
+                  s.minus += flags.minus;
+                }
             }
 
     for (const auto &cell : dof_handler.active_cell_iterators())
