@@ -129,7 +129,7 @@ namespace xcrack
        * stand for the curve it leaves.
        */
       std::vector<Point<2>>
-      common_zeros(Square f, Square g)
+      common_zeros(Square f, Square g, const bool clip = true)
       {
         const double scale = std::max(max_abs(f), max_abs(g));
         if (scale == 0)
@@ -180,18 +180,20 @@ namespace xcrack
         std::vector<Point<2>> points;
         for (double x : roots)
           {
-            if (!(x >= -tol && x <= 1 + tol))
+            if (clip && !(x >= -tol && x <= 1 + tol))
               continue;
-            x                = std::clamp(x, 0., 1.);
+            if (clip)
+              x = std::clamp(x, 0., 1.);
             const double fa  = a2 + a3 * x;
             const double ga  = b2 + b3 * x;
             const bool   use = std::abs(fa) >= std::abs(ga);
             if (std::max(std::abs(fa), std::abs(ga)) <= zero)
               continue; // both independent of y here
             double y = (use ? -(a0 + a1 * x) / fa : -(b0 + b1 * x) / ga);
-            if (!(y >= -tol && y <= 1 + tol))
+            if (clip && !(y >= -tol && y <= 1 + tol))
               continue;
-            y = std::clamp(y, 0., 1.);
+            if (clip)
+              y = std::clamp(y, 0., 1.);
             const Point<2> p(x, y);
             if (std::abs(bilinear(f, p)) <= 1e-8 &&
                 std::abs(bilinear(g, p)) <= 1e-8)
@@ -376,19 +378,35 @@ namespace xcrack
       const std::vector<Point<2>> tips = front_points_2d(lsn, lst);
       if (!tips.empty())
         return fan_rule(tips[0], square_of(lsn), n_points_1d);
-      // A slice of a 3D tip cell the front does not cross but passes close
-      // to: fan out from where the crack plane leaves the slice nearest to
-      // the front (smallest |lst|), so that the near-singular integrands
-      // get the graded rule and no triangle straddles the lips.
+      // A cell (or slice of a 3D cell) the front does not touch but passes
+      // close to: fan out from the point of the cell nearest to the front,
+      // so that the near-singular integrands get the graded rule. Where the
+      // crack plane crosses the cell that is where it leaves the cell
+      // nearest to the front (smallest |lst|), so that no triangle straddles
+      // the lips; otherwise the front's position (the common zero of the
+      // interpolants, extended beyond the cell) clipped to the cell.
       const std::vector<Point<2>> crossings = boundary_zeros(square_of(lsn));
-      if (crossings.size() < 2)
+      if (crossings.size() >= 2)
+        {
+          Point<2> centre = crossings[0];
+          for (const auto &p : crossings)
+            if (std::abs(bilinear(square_of(lst), p)) <
+                std::abs(bilinear(square_of(lst), centre)))
+              centre = p;
+          return fan_rule(centre, square_of(lsn), n_points_1d);
+        }
+      const std::vector<Point<2>> extended =
+        common_zeros(square_of(lsn), square_of(lst), /*clip=*/false);
+      if (extended.empty())
         return cut_cell_rule<2>(lsn, n_points_1d).first;
-      Point<2> centre = crossings[0];
-      for (const auto &p : crossings)
-        if (std::abs(bilinear(square_of(lst), p)) <
-            std::abs(bilinear(square_of(lst), centre)))
-          centre = p;
-      return fan_rule(centre, square_of(lsn), n_points_1d);
+      Point<2> nearest = extended[0];
+      for (const auto &p : extended)
+        if (p.distance(Point<2>(0.5, 0.5)) <
+            nearest.distance(Point<2>(0.5, 0.5)))
+          nearest = p;
+      for (unsigned int d = 0; d < 2; ++d)
+        nearest[d] = std::clamp(nearest[d], 0., 1.);
+      return fan_rule(nearest, square_of(lsn), n_points_1d);
     }
 
 
@@ -398,15 +416,20 @@ namespace xcrack
                      const std::vector<double> &lst,
                      const unsigned int         n_points_1d)
     {
+      // Where the front crosses the faces; none for a cell it passes close
+      // to without touching (the slices then fan out from their points
+      // nearest to it).
       const std::vector<Point<3>> crossings = front_points_3d(lsn, lst);
-      if (crossings.empty())
-        return cut_cell_rule<3>(lsn, n_points_1d).first;
 
       // The axis the front runs most nearly along: its tangent is normal to
       // both level-set gradients.
-      Point<3> centre;
-      for (const auto &p : crossings)
-        centre += p / static_cast<double>(crossings.size());
+      Point<3> centre(0.5, 0.5, 0.5);
+      if (!crossings.empty())
+        {
+          centre = Point<3>();
+          for (const auto &p : crossings)
+            centre += p / static_cast<double>(crossings.size());
+        }
       const Tensor<1, 3> tangent =
         cross_product_3d(trilinear_gradient(lsn, centre),
                          trilinear_gradient(lst, centre));

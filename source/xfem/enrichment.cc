@@ -234,6 +234,7 @@ namespace xcrack
     const Triangulation<dim> &tria = dof_handler.get_triangulation();
     cell_kind.assign(tria.n_active_cells(), CellKind::plain);
     fraction_minus.assign(tria.n_active_cells(), 0.);
+    near_front.assign(tria.n_active_cells(), false);
     special_rules.clear();
     const bool with_tips =
       parameters.tip_zone != EnrichmentParameters::TipZone::none;
@@ -283,6 +284,13 @@ namespace xcrack
                 }
             }
           cell_kind[cell->active_cell_index()] = kind;
+          // Cells within a diameter of the front see its singularity just
+          // outside: they get the tip rule too.
+          double distance = std::numeric_limits<double>::max();
+          for (unsigned int v = 0; v < lsn.size(); ++v)
+            distance = std::min(distance, std::hypot(lsn[v], lst[v]));
+          near_front[cell->active_cell_index()] =
+            (kind != CellKind::tip && distance < cell->diameter());
 
           if (kind == CellKind::plain)
             {
@@ -626,13 +634,14 @@ namespace xcrack
     const unsigned int                                    n_points_1d) const
   {
     const CellKind kind = cell_kind[cell->active_cell_index()];
-    if (kind == CellKind::plain)
+    const bool     near = near_front[cell->active_cell_index()];
+    if (kind == CellKind::plain && !near)
       return nullptr;
     // Split cells with branch functions integrate them as finely as tip
     // cells: a low-order rule would leave their many DoFs underintegrated
     // (spurious zero-energy modes).
     const unsigned int n =
-      (kind == CellKind::tip || cell->active_fe_index() >= tip ?
+      (kind == CellKind::tip || near || cell->active_fe_index() >= tip ?
          std::max(n_points_1d, parameters.tip_quadrature_points) :
          n_points_1d);
     // The cache key combines cell and order: assembly and error evaluation
@@ -644,7 +653,7 @@ namespace xcrack
 
     const std::vector<double> lsn = vertex_values(cell, true);
     Quadrature<dim>           rule;
-    if (kind == CellKind::split)
+    if (kind == CellKind::split && !near)
       rule = CellQuadrature::cut_cell_rule<dim>(lsn, n).first;
     else
       rule = CellQuadrature::tip_cell_rule<dim>(lsn,

@@ -179,8 +179,8 @@ namespace xcrack
      * The quadrature rule of a split or tip cell (reference coordinates), or
      * nullptr for a cell a Gauss rule integrates. Split cells: exact for
      * polynomials of degree 2 @p n_points_1d - 1 on each side of the crack.
-     * Tip cells: the fan rule with at least `Tip quadrature points` points
-     * per direction. Built on first use and cached until the next
+     * Tip cells and cells within a diameter of the front: the fan rule with
+     * at least `Tip quadrature points` points per direction. Built on first use and cached until the next
      * set_fe_indices().
      */
     const Quadrature<dim> *
@@ -222,6 +222,8 @@ namespace xcrack
     std::vector<CellKind>                          cell_kind;
     /// Fraction of each cell's volume on the negative side of the crack.
     std::vector<double> fraction_minus;
+    /// Cells the front does not touch but passes within a diameter of.
+    std::vector<bool> near_front;
     /// Whether the functions of each vertex are enriched by H, by F1..F4
     /// (vertices of the owned and ghost cells).
     std::vector<bool>                               heaviside_vertex;
