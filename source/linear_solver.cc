@@ -8,7 +8,6 @@
 #include <Amesos_Mumps.h>
 #include <Epetra_LinearProblem.h>
 #include <Teuchos_ParameterList.hpp>
-
 #include <stdexcept>
 
 namespace xcrack
@@ -68,7 +67,7 @@ namespace xcrack
       const_cast<Epetra_MultiVector *>(
         static_cast<const Epetra_MultiVector *>(&rhs.trilinos_vector())));
     int error = 0, info = 0;
-    for (int relaxation = 40; relaxation <= 640; relaxation *= 4)
+    for (int relaxation = 100; relaxation <= 1600; relaxation *= 4)
       {
         Amesos_Mumps solver(problem);
         solver.SetICNTL(14, relaxation);

@@ -32,15 +32,15 @@ main(int argc, char **argv)
       Triangulation<2> tria;
       GridGenerator::hyper_cube(tria, -1, 1);
       tria.refine_global(2);
-      const SegmentCrack crack(Point<2>(-2, 0.1),
+      const SegmentCrack   crack(Point<2>(-2, 0.1),
                                Point<2>(0.05, 0.1),
                                false,
                                true);
       EnrichmentParameters parameters;
       parameters.tip_zone = EnrichmentParameters::TipZone::geometric;
       parameters.radius   = 0.3;
-      Enrichment<2>   enrichment(crack, degree, parameters);
-      DoFHandler<2>   dof_handler(tria);
+      Enrichment<2> enrichment(crack, degree, parameters);
+      DoFHandler<2> dof_handler(tria);
       enrichment.set_fe_indices(dof_handler);
       dof_handler.distribute_dofs(enrichment.get_fe_collection());
 
@@ -67,26 +67,25 @@ main(int argc, char **argv)
               const auto &outer = fe.system_to_base_index(i);
               const auto &inner = fe.base_element(outer.first.first)
                                     .system_to_base_index(outer.second);
-              const bool  branch = (inner.first.first == 2);
-              const FE_Q<2> &hat = (branch ? linear : standard);
+              const bool     branch = (inner.first.first == 2);
+              const FE_Q<2> &hat    = (branch ? linear : standard);
               (branch ? n_branch : n_jump) += 1;
               const unsigned int c = fe.system_to_component_index(i).first;
               for (unsigned int q = 0; q < points.size(); ++q)
                 {
                   const Point<2> &x = fe_values.quadrature_point(q);
-                  const double    N = hat.shape_value(inner.second,
-                                                   points.point(q));
+                  const double    N =
+                    hat.shape_value(inner.second, points.point(q));
                   const Tensor<1, 2> grad_N =
                     hat.shape_grad(inner.second, points.point(q)) / h;
-                  value_error =
-                    std::max(value_error,
-                             std::abs(fe_values.shape_value(i, q) -
-                                      N * f->value(x)));
-                  gradient_error = std::max(
-                    gradient_error,
-                    (fe_values.shape_grad_component(i, q, c) -
-                     (grad_N * f->value(x) + N * f->gradient(x)))
-                      .norm());
+                  value_error = std::max(value_error,
+                                         std::abs(fe_values.shape_value(i, q) -
+                                                  N * f->value(x)));
+                  gradient_error =
+                    std::max(gradient_error,
+                             (fe_values.shape_grad_component(i, q, c) -
+                              (grad_N * f->value(x) + N * f->gradient(x)))
+                               .norm());
                 }
             }
         }

@@ -92,8 +92,10 @@ inverse_r_square(const Point<2> &t)
 }
 
 void
-check(const std::string &what, const double value, const double exact,
-      const double tolerance)
+check(const std::string &what,
+      const double       value,
+      const double       exact,
+      const double       tolerance)
 {
   const double error = std::abs(value - exact) / std::max(1., std::abs(exact));
   logfile << "  " << what << ": " << std::setprecision(10) << value
@@ -158,8 +160,8 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
   // 2D: crack along y = ty, x < tx, tip at (tx, ty).
-  for (const auto &tip : {Point<2>(0.3, 0.6), Point<2>(0, 0), Point<2>(0.5, 0),
-                          Point<2>(1, 0.5)})
+  for (const auto &tip :
+       {Point<2>(0.3, 0.6), Point<2>(0, 0), Point<2>(0.5, 0), Point<2>(1, 0.5)})
     {
       std::ostringstream name;
       name << "2D, tip at (" << tip << ")";
@@ -172,7 +174,7 @@ main(int argc, char **argv)
     }
   // 2D, inclined crack: lsn and lst rotated by 30 degrees about (0.4, 0.45).
   {
-    const double c = std::cos(numbers::PI / 6), s = std::sin(numbers::PI / 6);
+    const double   c = std::cos(numbers::PI / 6), s = std::sin(numbers::PI / 6);
     const Field<2> lsn = [&](const Point<2> &x) {
       return -s * (x[0] - 0.4) + c * (x[1] - 0.45);
     };

@@ -110,11 +110,9 @@ namespace xcrack
         for (const auto &fe : enrichment->get_fe_collection())
           {
             fe_collection.push_back(fe);
-            quadrature_collection.push_back(
-              QGauss<dim>(degree + (fe_collection.size() - 1 >=
-                                        Enrichment<dim>::tip ?
-                                      3 :
-                                      1)));
+            quadrature_collection.push_back(QGauss<dim>(
+              degree +
+              (fe_collection.size() - 1 >= Enrichment<dim>::tip ? 3 : 1)));
           }
       }
     else
@@ -204,8 +202,11 @@ namespace xcrack
   {
     if (enrichment)
       {
-        make_enriched_dirichlet_constraints(
-          dof_handler, *enrichment, cracks[0], boundary_conditions, constraints);
+        make_enriched_dirichlet_constraints(dof_handler,
+                                            *enrichment,
+                                            cracks[0],
+                                            boundary_conditions,
+                                            constraints);
         return;
       }
     for (const auto &[id, function] : boundary_conditions.dirichlet)
@@ -231,8 +232,10 @@ namespace xcrack
           (enrichment ? enrichment->special_quadrature(cell, n_points_1d) :
                         nullptr))
       {
-        split_values = std::make_unique<FEValues<dim>>(
-          cell->get_fe(), *rule, hp_fe_values.get_update_flags());
+        split_values =
+          std::make_unique<FEValues<dim>>(cell->get_fe(),
+                                          *rule,
+                                          hp_fe_values.get_update_flags());
         split_values->reinit(cell);
         return *split_values;
       }
@@ -397,8 +400,8 @@ namespace xcrack
     // integrated accurately even for Q2 and smooth but oscillating data.
     hp::QCollection<dim> error_quadrature;
     for (unsigned int i = 0; i < fe_collection.size(); ++i)
-      error_quadrature.push_back(
-        QGauss<dim>(degree + (enrichment && i >= Enrichment<dim>::tip ? 5 : 3)));
+      error_quadrature.push_back(QGauss<dim>(
+        degree + (enrichment && i >= Enrichment<dim>::tip ? 5 : 3)));
     hp::FEValues<dim>                hp_fe_values(fe_collection,
                                    error_quadrature,
                                    update_values | update_gradients |
@@ -523,6 +526,26 @@ namespace xcrack
     Vector<float> subdomain(triangulation.n_active_cells());
     subdomain = triangulation.locally_owned_subdomain();
     data_out.add_data_vector(subdomain, "subdomain");
+    // Which functions each cell carries (0 plain, 1 jump, 2 branch, 3 both)
+    // and what the crack does to it (0 nothing, 1 splits it, 2 front in it,
+    // 3 front within a diameter): what a user checks first when an enriched
+    // run looks wrong.
+    Vector<float> enrichment_index(triangulation.n_active_cells());
+    Vector<float> crack_category(triangulation.n_active_cells());
+    if (enrichment)
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            enrichment_index[cell->active_cell_index()] =
+              cell->active_fe_index();
+            crack_category[cell->active_cell_index()] =
+              enrichment->cell_category(cell);
+          }
+    if (enrichment)
+      {
+        data_out.add_data_vector(enrichment_index, "enrichment");
+        data_out.add_data_vector(crack_category, "crack_cell");
+      }
     for (unsigned int i = 0; i < cracks.size(); ++i)
       {
         const std::string suffix =
@@ -630,8 +653,7 @@ namespace xcrack
           pcout << ", branch functions on the nodes of the cells the front "
                    "touches";
         else if (e.tip_zone == EnrichmentParameters::TipZone::geometric)
-          pcout << ", branch functions within " << e.radius
-                << " of the front";
+          pcout << ", branch functions within " << e.radius << " of the front";
         else
           pcout << " only (no branch functions)";
         pcout << std::endl;

@@ -45,6 +45,8 @@ namespace xcrack
           const std::vector<std::vector<bool>> &constant_modes) const;
 
     std::string  type               = "direct";
+    double       relative_tolerance = 1e-10;
+    unsigned int max_iterations     = 2000;
 
   private:
     /// MUMPS through Amesos, symmetric; std::runtime_error on failure.
@@ -52,10 +54,6 @@ namespace xcrack
     solve_direct(const TrilinosWrappers::SparseMatrix &matrix,
                  TrilinosWrappers::MPI::Vector        &x,
                  const TrilinosWrappers::MPI::Vector  &rhs) const;
-
-  public:
-    double       relative_tolerance = 1e-10;
-    unsigned int max_iterations     = 2000;
   };
 } // namespace xcrack
 

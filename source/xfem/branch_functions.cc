@@ -56,9 +56,7 @@ namespace xcrack
           break;
       }
     // F = sqrt(r) f(theta): dF/dr = F / (2r).
-    return {{sqrt_r * f,
-             (r > 0 ? 0.5 * f / sqrt_r : 0.),
-             sqrt_r * df_dtheta}};
+    return {{sqrt_r * f, (r > 0 ? 0.5 * f / sqrt_r : 0.), sqrt_r * df_dtheta}};
   }
 
 
@@ -97,7 +95,7 @@ namespace xcrack
         grad_n[d] = (crack.lsn(plus) - crack.lsn(minus)) / (2 * h);
         grad_t[d] = (crack.lst(plus) - crack.lst(minus)) / (2 * h);
       }
-    const auto values = polar_values(r, polar_angle(n, t));
+    const auto           values     = polar_values(r, polar_angle(n, t));
     const Tensor<1, dim> grad_r     = (n * grad_n + t * grad_t) / r;
     const Tensor<1, dim> grad_theta = (t * grad_n - n * grad_t) / (r * r);
     return values[1] * grad_r + values[2] * grad_theta;

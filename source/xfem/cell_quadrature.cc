@@ -1,7 +1,7 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/function.h>
-#include <deal.II/base/numbers.h>
 #include <deal.II/base/geometry_info.h>
+#include <deal.II/base/numbers.h>
 #include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/fe/fe_q.h>
@@ -115,8 +115,8 @@ namespace xcrack
               add_unique(points, corner(a));
             if (f[a] * f[b] < 0)
               add_unique(points,
-                         corner(a) + f[a] / (f[a] - f[b]) *
-                                       (corner(b) - corner(a)));
+                         corner(a) +
+                           f[a] / (f[a] - f[b]) * (corner(b) - corner(a)));
           }
         return points;
       }
@@ -214,9 +214,9 @@ namespace xcrack
        * each integrated by a Duffy collapse at the tip graded as u = s^2.
        */
       Quadrature<2>
-      fan_rule(const Point<2>     &tip,
-               const Square       &lsn,
-               const unsigned int  n_points_1d)
+      fan_rule(const Point<2>    &tip,
+               const Square      &lsn,
+               const unsigned int n_points_1d)
       {
         std::vector<Point<2>> polygon;
         for (unsigned int e = 0; e < 4; ++e)
@@ -228,9 +228,9 @@ namespace xcrack
                                               (corner(b) - corner(a)));
           }
 
-        const QGauss<1>         gauss(n_points_1d);
-        std::vector<Point<2>>   points;
-        std::vector<double>     weights;
+        const QGauss<1>       gauss(n_points_1d);
+        std::vector<Point<2>> points;
+        std::vector<double>   weights;
         for (unsigned int k = 0; k < polygon.size(); ++k)
           {
             const Point<2> &a = polygon[k];
@@ -242,16 +242,15 @@ namespace xcrack
             // Along the edge the integrands vary like 1/distance to the tip:
             // wide triangles are cut into pieces of at most 45 degrees seen
             // from the tip, on which that is smooth enough for Gauss.
-            const double angle =
-              std::atan2(cross, (a - tip) * (b - tip));
+            const double       angle = std::atan2(cross, (a - tip) * (b - tip));
             const unsigned int pieces =
               static_cast<unsigned int>(std::ceil(angle / (numbers::PI / 4)));
             for (unsigned int p = 0; p < pieces; ++p)
               {
-                const Point<2> a_p = a + (double(p) / pieces) * (b - a);
-                const Point<2> b_p = a + (double(p + 1) / pieces) * (b - a);
+                const Point<2>     a_p = a + (double(p) / pieces) * (b - a);
+                const Point<2>     b_p = a + (double(p + 1) / pieces) * (b - a);
                 const Tensor<1, 2> ta = a_p - tip, ab = b_p - a_p;
-                const double area = 0.5 * cross / pieces;
+                const double       area = 0.5 * cross / pieces;
                 for (unsigned int i = 0; i < n_points_1d; ++i)
                   for (unsigned int j = 0; j < n_points_1d; ++j)
                     {
@@ -259,8 +258,8 @@ namespace xcrack
                       const double v = gauss.point(j)[0];
                       const double u = s * s;
                       points.push_back(tip + u * ta + u * v * ab);
-                      weights.push_back(4 * area * s * s * s *
-                                        gauss.weight(i) * gauss.weight(j));
+                      weights.push_back(4 * area * s * s * s * gauss.weight(i) *
+                                        gauss.weight(j));
                     }
               }
           }
@@ -290,7 +289,8 @@ namespace xcrack
 
     template <int dim>
     std::pair<Quadrature<dim>, double>
-    cut_cell_rule(const std::vector<double> &lsn, const unsigned int n_points_1d)
+    cut_cell_rule(const std::vector<double> &lsn,
+                  const unsigned int         n_points_1d)
     {
       const ReferenceCellLevelSet<dim>      level_set(lsn);
       const hp::QCollection<1>              q1d(QGauss<1>{n_points_1d});
@@ -322,172 +322,172 @@ namespace xcrack
 
     namespace
     {
-    std::vector<Point<2>>
-    front_points_2d(const std::vector<double> &lsn,
-                    const std::vector<double> &lst)
-    {
-      return common_zeros(square_of(lsn), square_of(lst));
-    }
+      std::vector<Point<2>>
+      front_points_2d(const std::vector<double> &lsn,
+                      const std::vector<double> &lst)
+      {
+        return common_zeros(square_of(lsn), square_of(lst));
+      }
 
 
 
-    std::vector<Point<3>>
-    front_points_3d(const std::vector<double> &lsn,
-                    const std::vector<double> &lst)
-    {
-      std::vector<Point<3>> points;
-      for (unsigned int d = 0; d < 3; ++d)
-        for (unsigned int side = 0; side < 2; ++side)
-          {
-            // The face x_d = side, with local coordinates (x_i, x_j), i < j.
-            const unsigned int i = (d == 0 ? 1 : 0), j = (d == 2 ? 1 : 2);
-            Square             f, g;
-            for (unsigned int a = 0; a < 2; ++a)
-              for (unsigned int b = 0; b < 2; ++b)
-                {
-                  std::array<unsigned int, 3> bits;
-                  bits[d]                   = side;
-                  bits[i]                   = a;
-                  bits[j]                   = b;
-                  f[a + 2 * b]              = lsn[cube_vertex(bits)];
-                  g[a + 2 * b]              = lst[cube_vertex(bits)];
-                }
-            for (const Point<2> &q : common_zeros(f, g))
-              {
-                Point<3> p;
-                p[d] = side;
-                p[i] = q[0];
-                p[j] = q[1];
-                bool known = false;
-                for (const auto &r : points)
-                  known = known || r.distance(p) < 1e-10;
-                if (!known)
-                  points.push_back(p);
-              }
-          }
-      return points;
-    }
-
-
-
-    Quadrature<2>
-    tip_cell_rule_2d(const std::vector<double> &lsn,
-                     const std::vector<double> &lst,
-                     const unsigned int         n_points_1d)
-    {
-      const std::vector<Point<2>> tips = front_points_2d(lsn, lst);
-      if (!tips.empty())
-        return fan_rule(tips[0], square_of(lsn), n_points_1d);
-      // A cell (or slice of a 3D cell) the front does not touch but passes
-      // close to: fan out from the point of the cell nearest to the front,
-      // so that the near-singular integrands get the graded rule. Where the
-      // crack plane crosses the cell that is where it leaves the cell
-      // nearest to the front (smallest |lst|), so that no triangle straddles
-      // the lips; otherwise the front's position (the common zero of the
-      // interpolants, extended beyond the cell) clipped to the cell.
-      const std::vector<Point<2>> crossings = boundary_zeros(square_of(lsn));
-      if (crossings.size() >= 2)
-        {
-          Point<2> centre = crossings[0];
-          for (const auto &p : crossings)
-            if (std::abs(bilinear(square_of(lst), p)) <
-                std::abs(bilinear(square_of(lst), centre)))
-              centre = p;
-          return fan_rule(centre, square_of(lsn), n_points_1d);
-        }
-      const std::vector<Point<2>> extended =
-        common_zeros(square_of(lsn), square_of(lst), /*clip=*/false);
-      if (extended.empty())
-        return cut_cell_rule<2>(lsn, n_points_1d).first;
-      Point<2> nearest = extended[0];
-      for (const auto &p : extended)
-        if (p.distance(Point<2>(0.5, 0.5)) <
-            nearest.distance(Point<2>(0.5, 0.5)))
-          nearest = p;
-      for (unsigned int d = 0; d < 2; ++d)
-        nearest[d] = std::clamp(nearest[d], 0., 1.);
-      return fan_rule(nearest, square_of(lsn), n_points_1d);
-    }
-
-
-
-    Quadrature<3>
-    tip_cell_rule_3d(const std::vector<double> &lsn,
-                     const std::vector<double> &lst,
-                     const unsigned int         n_points_1d)
-    {
-      // Where the front crosses the faces; none for a cell it passes close
-      // to without touching (the slices then fan out from their points
-      // nearest to it).
-      const std::vector<Point<3>> crossings = front_points_3d(lsn, lst);
-
-      // The axis the front runs most nearly along: its tangent is normal to
-      // both level-set gradients.
-      Point<3> centre(0.5, 0.5, 0.5);
-      if (!crossings.empty())
-        {
-          centre = Point<3>();
-          for (const auto &p : crossings)
-            centre += p / static_cast<double>(crossings.size());
-        }
-      const Tensor<1, 3> tangent =
-        cross_product_3d(trilinear_gradient(lsn, centre),
-                         trilinear_gradient(lst, centre));
-      unsigned int k = 2;
-      for (unsigned int d = 0; d < 3; ++d)
-        if (std::abs(tangent[d]) > std::abs(tangent[k]))
-          k = d;
-      const unsigned int i = (k == 0 ? 1 : 0), j = (k == 2 ? 1 : 2);
-
-      // Break the axis where the front enters or leaves a slice.
-      std::vector<double> breaks = {0., 1.};
-      for (const auto &p : crossings)
-        breaks.push_back(p[k]);
-      std::sort(breaks.begin(), breaks.end());
-
-      const QGauss<1>         gauss(n_points_1d);
-      std::vector<Point<3>>   points;
-      std::vector<double>     weights;
-      for (unsigned int b = 0; b + 1 < breaks.size(); ++b)
-        {
-          const double z0 = breaks[b], length = breaks[b + 1] - breaks[b];
-          if (length < 1e-10)
-            continue;
-          for (unsigned int q = 0; q < n_points_1d; ++q)
+      std::vector<Point<3>>
+      front_points_3d(const std::vector<double> &lsn,
+                      const std::vector<double> &lst)
+      {
+        std::vector<Point<3>> points;
+        for (unsigned int d = 0; d < 3; ++d)
+          for (unsigned int side = 0; side < 2; ++side)
             {
-              const double        zeta = z0 + length * gauss.point(q)[0];
-              std::vector<double> slice_lsn(4), slice_lst(4);
+              // The face x_d = side, with local coordinates (x_i, x_j), i < j.
+              const unsigned int i = (d == 0 ? 1 : 0), j = (d == 2 ? 1 : 2);
+              Square             f, g;
               for (unsigned int a = 0; a < 2; ++a)
-                for (unsigned int c = 0; c < 2; ++c)
+                for (unsigned int b = 0; b < 2; ++b)
                   {
                     std::array<unsigned int, 3> bits;
-                    bits[i]                     = a;
-                    bits[j]                     = c;
-                    bits[k]                     = 0;
-                    const unsigned int low      = cube_vertex(bits);
-                    bits[k]                     = 1;
-                    const unsigned int high     = cube_vertex(bits);
-                    slice_lsn[a + 2 * c] =
-                      (1 - zeta) * lsn[low] + zeta * lsn[high];
-                    slice_lst[a + 2 * c] =
-                      (1 - zeta) * lst[low] + zeta * lst[high];
+                    bits[d]      = side;
+                    bits[i]      = a;
+                    bits[j]      = b;
+                    f[a + 2 * b] = lsn[cube_vertex(bits)];
+                    g[a + 2 * b] = lst[cube_vertex(bits)];
                   }
-              const Quadrature<2> slice =
-                tip_cell_rule_2d(slice_lsn, slice_lst, n_points_1d);
-              for (unsigned int s = 0; s < slice.size(); ++s)
+              for (const Point<2> &q : common_zeros(f, g))
                 {
                   Point<3> p;
-                  p[i] = slice.point(s)[0];
-                  p[j] = slice.point(s)[1];
-                  p[k] = zeta;
-                  points.push_back(p);
-                  weights.push_back(length * gauss.weight(q) *
-                                    slice.weight(s));
+                  p[d]       = side;
+                  p[i]       = q[0];
+                  p[j]       = q[1];
+                  bool known = false;
+                  for (const auto &r : points)
+                    known = known || r.distance(p) < 1e-10;
+                  if (!known)
+                    points.push_back(p);
                 }
             }
-        }
-      return Quadrature<3>(points, weights);
-    }
+        return points;
+      }
+
+
+
+      Quadrature<2>
+      tip_cell_rule_2d(const std::vector<double> &lsn,
+                       const std::vector<double> &lst,
+                       const unsigned int         n_points_1d)
+      {
+        const std::vector<Point<2>> tips = front_points_2d(lsn, lst);
+        if (!tips.empty())
+          return fan_rule(tips[0], square_of(lsn), n_points_1d);
+        // A cell (or slice of a 3D cell) the front does not touch but passes
+        // close to: fan out from the point of the cell nearest to the front,
+        // so that the near-singular integrands get the graded rule. Where the
+        // crack plane crosses the cell that is where it leaves the cell
+        // nearest to the front (smallest |lst|), so that no triangle straddles
+        // the lips; otherwise the front's position (the common zero of the
+        // interpolants, extended beyond the cell) clipped to the cell.
+        const std::vector<Point<2>> crossings = boundary_zeros(square_of(lsn));
+        if (crossings.size() >= 2)
+          {
+            Point<2> centre = crossings[0];
+            for (const auto &p : crossings)
+              if (std::abs(bilinear(square_of(lst), p)) <
+                  std::abs(bilinear(square_of(lst), centre)))
+                centre = p;
+            return fan_rule(centre, square_of(lsn), n_points_1d);
+          }
+        const std::vector<Point<2>> extended =
+          common_zeros(square_of(lsn), square_of(lst), /*clip=*/false);
+        if (extended.empty())
+          return cut_cell_rule<2>(lsn, n_points_1d).first;
+        Point<2> nearest = extended[0];
+        for (const auto &p : extended)
+          if (p.distance(Point<2>(0.5, 0.5)) <
+              nearest.distance(Point<2>(0.5, 0.5)))
+            nearest = p;
+        for (unsigned int d = 0; d < 2; ++d)
+          nearest[d] = std::clamp(nearest[d], 0., 1.);
+        return fan_rule(nearest, square_of(lsn), n_points_1d);
+      }
+
+
+
+      Quadrature<3>
+      tip_cell_rule_3d(const std::vector<double> &lsn,
+                       const std::vector<double> &lst,
+                       const unsigned int         n_points_1d)
+      {
+        // Where the front crosses the faces; none for a cell it passes close
+        // to without touching (the slices then fan out from their points
+        // nearest to it).
+        const std::vector<Point<3>> crossings = front_points_3d(lsn, lst);
+
+        // The axis the front runs most nearly along: its tangent is normal to
+        // both level-set gradients.
+        Point<3> centre(0.5, 0.5, 0.5);
+        if (!crossings.empty())
+          {
+            centre = Point<3>();
+            for (const auto &p : crossings)
+              centre += p / static_cast<double>(crossings.size());
+          }
+        const Tensor<1, 3> tangent =
+          cross_product_3d(trilinear_gradient(lsn, centre),
+                           trilinear_gradient(lst, centre));
+        unsigned int k = 2;
+        for (unsigned int d = 0; d < 3; ++d)
+          if (std::abs(tangent[d]) > std::abs(tangent[k]))
+            k = d;
+        const unsigned int i = (k == 0 ? 1 : 0), j = (k == 2 ? 1 : 2);
+
+        // Break the axis where the front enters or leaves a slice.
+        std::vector<double> breaks = {0., 1.};
+        for (const auto &p : crossings)
+          breaks.push_back(p[k]);
+        std::sort(breaks.begin(), breaks.end());
+
+        const QGauss<1>       gauss(n_points_1d);
+        std::vector<Point<3>> points;
+        std::vector<double>   weights;
+        for (unsigned int b = 0; b + 1 < breaks.size(); ++b)
+          {
+            const double z0 = breaks[b], length = breaks[b + 1] - breaks[b];
+            if (length < 1e-10)
+              continue;
+            for (unsigned int q = 0; q < n_points_1d; ++q)
+              {
+                const double        zeta = z0 + length * gauss.point(q)[0];
+                std::vector<double> slice_lsn(4), slice_lst(4);
+                for (unsigned int a = 0; a < 2; ++a)
+                  for (unsigned int c = 0; c < 2; ++c)
+                    {
+                      std::array<unsigned int, 3> bits;
+                      bits[i]                 = a;
+                      bits[j]                 = c;
+                      bits[k]                 = 0;
+                      const unsigned int low  = cube_vertex(bits);
+                      bits[k]                 = 1;
+                      const unsigned int high = cube_vertex(bits);
+                      slice_lsn[a + 2 * c] =
+                        (1 - zeta) * lsn[low] + zeta * lsn[high];
+                      slice_lst[a + 2 * c] =
+                        (1 - zeta) * lst[low] + zeta * lst[high];
+                    }
+                const Quadrature<2> slice =
+                  tip_cell_rule_2d(slice_lsn, slice_lst, n_points_1d);
+                for (unsigned int s = 0; s < slice.size(); ++s)
+                  {
+                    Point<3> p;
+                    p[i] = slice.point(s)[0];
+                    p[j] = slice.point(s)[1];
+                    p[k] = zeta;
+                    points.push_back(p);
+                    weights.push_back(length * gauss.weight(q) *
+                                      slice.weight(s));
+                  }
+              }
+          }
+        return Quadrature<3>(points, weights);
+      }
     } // namespace
 
 

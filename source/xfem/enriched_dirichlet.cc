@@ -225,7 +225,7 @@ namespace xcrack
             // DoFs are numbered vertices first, then lines, then the quad.
             std::map<unsigned int, std::vector<unsigned int>> groups;
             std::map<unsigned int, Point<dim>>                positions;
-            const unsigned int vertex_block =
+            const unsigned int                                vertex_block =
               fe.n_dofs_per_vertex() * face->n_vertices();
             const unsigned int line_block =
               (dim == 3 ? fe.n_dofs_per_line() * face->n_lines() : 0);

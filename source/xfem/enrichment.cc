@@ -95,11 +95,11 @@ namespace xcrack
     prm.enter_subsection("Enrichment");
     heaviside_volume_tolerance = prm.get_double("Heaviside volume tolerance");
     const std::string zone     = prm.get("Tip enrichment");
-    tip_zone = (zone == "none"        ? TipZone::none :
-                zone == "topological" ? TipZone::topological :
-                                        TipZone::geometric);
-    radius   = prm.get_double("Enrichment radius");
-    tip_quadrature_points = prm.get_integer("Tip quadrature points");
+    tip_zone                   = (zone == "none"        ? TipZone::none :
+                                  zone == "topological" ? TipZone::topological :
+                                                          TipZone::geometric);
+    radius                     = prm.get_double("Enrichment radius");
+    tip_quadrature_points      = prm.get_integer("Tip quadrature points");
     prm.leave_subsection();
     check_input(tip_zone != TipZone::geometric || radius > 0,
                 "Enrichment/Tip enrichment = geometric needs Enrichment "
@@ -141,14 +141,13 @@ namespace xcrack
     for (const bool with_branches : {false, true})
       for (const bool with_jump : {false, true})
         fe_collection.push_back(FESystem<dim>(
-          FE_Enriched<dim>(&standard,
-                           {with_jump ? static_cast<const FiniteElement<dim> *>(
-                                          &standard) :
-                                        &nothing,
-                            with_branches ?
-                              static_cast<const FiniteElement<dim> *>(&linear) :
-                              &nothing},
-                           {jump, branches}),
+          FE_Enriched<dim>(
+            &standard,
+            {with_jump ? static_cast<const FiniteElement<dim> *>(&standard) :
+                         &nothing,
+             with_branches ? static_cast<const FiniteElement<dim> *>(&linear) :
+                             &nothing},
+            {jump, branches}),
           dim));
   }
 
@@ -376,8 +375,8 @@ namespace xcrack
                      EnrichmentParameters::TipZone::geometric &&
                    std::hypot(crack.lsn(x), crack.lst(x)) <= parameters.radius);
               }
-            heaviside_vertex[index] = touches_split[index] &&
-                                      !touches_tip[index] && !tip_vertex[index];
+            heaviside_vertex[index] =
+              touches_split[index] && !touches_tip[index] && !tip_vertex[index];
             // A support the crack barely cuts gives a function that is almost
             // a copy of the standard one, and a nearly singular matrix: drop
             // it. (A vertex that only reaches split cells through hanging-node
@@ -501,6 +500,24 @@ namespace xcrack
 
 
   template <int dim>
+  unsigned int
+  Enrichment<dim>::cell_category(
+    const typename DoFHandler<dim>::active_cell_iterator &cell) const
+  {
+    switch (cell_kind[cell->active_cell_index()])
+      {
+        case CellKind::split:
+          return 1;
+        case CellKind::tip:
+          return 2;
+        default:
+          return near_front[cell->active_cell_index()] ? 3 : 0;
+      }
+  }
+
+
+
+  template <int dim>
   bool
   Enrichment<dim>::is_tip(
     const typename DoFHandler<dim>::active_cell_iterator &cell) const
@@ -605,16 +622,16 @@ namespace xcrack
               // every rank; the others the support of their function.
               bool keep;
               if (i < n_vertex_dofs)
-                keep = (s == 1 ? heaviside_vertex :
-                                 tip_vertex)[cell->vertex_index(
-                  i / fe.n_dofs_per_vertex())];
+                keep =
+                  (s == 1 ? heaviside_vertex : tip_vertex)[cell->vertex_index(
+                    i / fe.n_dofs_per_vertex())];
               else
                 {
                   // As for vertices: the support must straddle the crack
                   // by more than the volume tolerance (a Q2 edge DoF of a
                   // cell whose face the crack runs along sees one side).
                   const Support &flags = support[dofs[i]];
-                  keep = flags.split && !flags.tip &&
+                  keep                 = flags.split && !flags.tip &&
                          std::min(flags.plus, flags.minus) >
                            parameters.heaviside_volume_tolerance *
                              (flags.plus + flags.minus);
@@ -656,9 +673,8 @@ namespace xcrack
     if (kind == CellKind::split && !near)
       rule = CellQuadrature::cut_cell_rule<dim>(lsn, n).first;
     else
-      rule = CellQuadrature::tip_cell_rule<dim>(lsn,
-                                                vertex_values(cell, false),
-                                                n);
+      rule =
+        CellQuadrature::tip_cell_rule<dim>(lsn, vertex_values(cell, false), n);
     return &special_rules.emplace(key, std::move(rule)).first->second;
   }
 

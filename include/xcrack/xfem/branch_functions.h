@@ -13,7 +13,8 @@ namespace xcrack
    * One of the four crack-tip branch functions of X-FEM,
    *
    *   F1 = sqrt(r) sin(theta/2),          F2 = sqrt(r) cos(theta/2),
-   *   F3 = sqrt(r) sin(theta/2) sin(theta), F4 = sqrt(r) cos(theta/2) sin(theta),
+   *   F3 = sqrt(r) sin(theta/2) sin(theta), F4 = sqrt(r) cos(theta/2)
+   * sin(theta),
    *
    * which span the displacements of the Williams fields (all three modes,
    * both plane models) about the front. The polar coordinates come from the

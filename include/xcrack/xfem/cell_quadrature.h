@@ -40,7 +40,8 @@ namespace xcrack
      */
     template <int dim>
     std::vector<Point<dim>>
-    front_points(const std::vector<double> &lsn, const std::vector<double> &lst);
+    front_points(const std::vector<double> &lsn,
+                 const std::vector<double> &lst);
 
     /**
      * The rule of a cell the crack front touches, built to integrate the

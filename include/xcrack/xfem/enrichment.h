@@ -116,8 +116,14 @@ namespace xcrack
    * on supp N_j would copy N_j and make the matrix singular.
    *
    * Split cells are integrated by a rule that is exact on each side of the
-   * crack, tip cells by the fan rule of CellQuadrature::tip_cell_rule; both
-   * are cached per cell.
+   * crack; tip cells, and cells within a diameter of the front, by the fan
+   * rule of CellQuadrature::tip_cell_rule; all are cached per cell. For Q2
+   * the jump DoFs of edges and faces follow their support (split, straddling
+   * the crack beyond the volume tolerance, no tip cell), also inside the
+   * tip zone.
+   *
+   * Not yet: DOF gathering, shifted enrichment, several cracks, fit to
+   * vertex.
    */
   template <int dim>
   class Enrichment
@@ -171,6 +177,14 @@ namespace xcrack
     bool
     is_split(const typename DoFHandler<dim>::active_cell_iterator &cell) const;
 
+    /**
+     * What the crack does to @p cell, for output: 0 nothing, 1 splits it,
+     * 2 its front touches it, 3 its front passes within a diameter of it.
+     */
+    unsigned int
+    cell_category(
+      const typename DoFHandler<dim>::active_cell_iterator &cell) const;
+
     /// Whether the crack front touches @p cell (and it has a special rule).
     bool
     is_tip(const typename DoFHandler<dim>::active_cell_iterator &cell) const;
@@ -180,8 +194,8 @@ namespace xcrack
      * nullptr for a cell a Gauss rule integrates. Split cells: exact for
      * polynomials of degree 2 @p n_points_1d - 1 on each side of the crack.
      * Tip cells and cells within a diameter of the front: the fan rule with
-     * at least `Tip quadrature points` points per direction. Built on first use and cached until the next
-     * set_fe_indices().
+     * at least `Tip quadrature points` points per direction. Built on first use
+     * and cached until the next set_fe_indices().
      */
     const Quadrature<dim> *
     special_quadrature(
@@ -214,12 +228,12 @@ namespace xcrack
     vertex_values(const typename Triangulation<dim>::cell_iterator &cell,
                   const bool normal) const;
 
-    const CrackGeometry<dim>                      &crack;
-    const EnrichmentParameters                     parameters;
-    HeavisideFunction<dim>                         heaviside_function;
+    const CrackGeometry<dim>                         &crack;
+    const EnrichmentParameters                        parameters;
+    HeavisideFunction<dim>                            heaviside_function;
     std::vector<std::unique_ptr<BranchFunction<dim>>> branch_functions;
-    hp::FECollection<dim>                          fe_collection;
-    std::vector<CellKind>                          cell_kind;
+    hp::FECollection<dim>                             fe_collection;
+    std::vector<CellKind>                             cell_kind;
     /// Fraction of each cell's volume on the negative side of the crack.
     std::vector<double> fraction_minus;
     /// Cells the front does not touch but passes within a diameter of.
