@@ -2,8 +2,8 @@
 // InputError whose message names the culprit (entry, line, boundary id, file):
 // unknown entries, wrong types, out-of-range values, malformed or
 // inconsistent expressions, boundary ids absent from the mesh, impossible
-// combinations, a missing mesh file, an unusable output directory. A valid
-// input is accepted.
+// combinations (an enrichment radius that does not fit the tip zone), a
+// missing mesh file, an unusable output directory. A valid input is accepted.
 
 #include <deal.II/base/mpi.h>
 
@@ -193,6 +193,12 @@ main(int argc, char **argv)
                 valid_3d));
   check("negative radius",
         changed("set Radius = 0.5", "set Radius = -0.5", valid_3d));
+  check("geometric tip enrichment without a radius",
+        valid_3d + "subsection Enrichment\n  set Tip enrichment = geometric\n"
+                   "end\n");
+  check("enrichment radius with topological enrichment",
+        valid_3d + "subsection Enrichment\n  set Enrichment radius = 0.2\n"
+                   "end\n");
   check("output directory is a file",
         changed("Output directory = results", "Output directory = a_file"));
 }

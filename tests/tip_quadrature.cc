@@ -16,6 +16,7 @@
 #include <fstream>
 #include <functional>
 #include <iomanip>
+#include <sstream>
 
 using namespace dealii;
 using namespace xcrack;

@@ -8,6 +8,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/hp/fe_values.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
@@ -102,6 +103,20 @@ namespace xcrack
       {
         EnrichmentParameters enrichment_parameters;
         enrichment_parameters.parse_parameters(prm);
+        if (enrichment_parameters.gather)
+          {
+            check_input(dim == 2 && Utilities::MPI::n_mpi_processes(
+                                      mpi_communicator) == 1,
+                        "Enrichment/Gather tip DoFs = true is implemented for "
+                        "2D runs on one rank only.");
+            check_input(
+              cracks[0]
+                  .front(0, GridTools::compute_bounding_box(triangulation))
+                  .size() <= 1,
+              "Enrichment/Gather tip DoFs = true: Crack 1 has two tips; "
+              "gathering ties the DoFs of one tip zone (set Tips = start or "
+              "end, or switch gathering off).");
+          }
         enrichment = std::make_unique<Enrichment<dim>>(cracks[0],
                                                        degree,
                                                        enrichment_parameters);
@@ -653,7 +668,8 @@ namespace xcrack
           pcout << ", branch functions on the nodes of the cells the front "
                    "touches";
         else if (e.tip_zone == EnrichmentParameters::TipZone::geometric)
-          pcout << ", branch functions within " << e.radius << " of the front";
+          pcout << ", branch functions within " << e.radius << " of the front"
+                << (e.gather ? ", gathered" : "");
         else
           pcout << " only (no branch functions)";
         pcout << std::endl;

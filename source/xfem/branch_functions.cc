@@ -15,8 +15,32 @@ namespace xcrack
 
 
 
+  template <int dim>
+  void
+  BranchFunction<dim>::set_cutoff(const double inner, const double outer)
+  {
+    Assert(0 <= inner && inner < outer, ExcMessage("Bad cut-off radii."));
+    cutoff_inner = inner;
+    cutoff_outer = outer;
+  }
+
+
+
   namespace
   {
+    /// The cut-off chi(r) and its derivative (chi = 1 without cut-off).
+    std::pair<double, double>
+    cutoff(const double r, const double inner, const double outer)
+    {
+      if (outer == 0 || r <= inner)
+        return {1., 0.};
+      if (r >= outer)
+        return {0., 0.};
+      const double t = (r - inner) / (outer - inner);
+      return {1 - 3 * t * t + 2 * t * t * t,
+              (-6 * t + 6 * t * t) / (outer - inner)};
+    }
+
     /// theta = atan2(lsn, lst) with lsn = 0 counted on the + side (+pi on
     /// the lips), whatever the sign of the zero.
     double
@@ -66,7 +90,9 @@ namespace xcrack
   BranchFunction<dim>::value(const Point<dim> &p, const unsigned int) const
   {
     const double n = crack.lsn(p), t = crack.lst(p);
-    return polar_values(std::hypot(n, t), polar_angle(n, t))[0];
+    const double r = std::hypot(n, t);
+    return polar_values(r, polar_angle(n, t))[0] *
+           cutoff(r, cutoff_inner, cutoff_outer).first;
   }
 
 
@@ -98,7 +124,9 @@ namespace xcrack
     const auto           values     = polar_values(r, polar_angle(n, t));
     const Tensor<1, dim> grad_r     = (n * grad_n + t * grad_t) / r;
     const Tensor<1, dim> grad_theta = (t * grad_n - n * grad_t) / (r * r);
-    return values[1] * grad_r + values[2] * grad_theta;
+    const auto [chi, dchi]          = cutoff(r, cutoff_inner, cutoff_outer);
+    return chi * (values[1] * grad_r + values[2] * grad_theta) +
+           values[0] * dchi * grad_r;
   }
 
 

@@ -359,7 +359,8 @@ namespace xcrack
                 constraints.add_line(dof);
                 constraints.set_inhomogeneity(dof, value);
               }
-            else if (node->second.branches)
+            else if (node->second.branches &&
+                     !enrichment.get_parameters().gather)
               constrain_by_local_fit(dof, node->second, constraints);
             else
               constrain_by_sides(dof, node->second, constraints);

@@ -17,6 +17,8 @@
 #include <algorithm>
 #include <limits>
 #include <numeric>
+#include <set>
+#include <sstream>
 
 namespace xcrack
 {
@@ -83,6 +85,14 @@ namespace xcrack
         "cells the front touches (and per slice along a 3D front). The "
         "stiffness integrands are smooth in the fan's graded coordinates, "
         "so a few points suffice; raise it to check.");
+      prm.declare_entry(
+        "Gather tip DoFs",
+        "false",
+        Patterns::Bool(),
+        "Tie the branch DoFs of each function and displacement component "
+        "over the whole tip zone to one DoF (2D, one rank): a geometric zone "
+        "then costs 4 x dim unknowns instead of thousands, and the matrix "
+        "stays better conditioned.");
     }
     prm.leave_subsection();
   }
@@ -100,13 +110,22 @@ namespace xcrack
                                                           TipZone::geometric);
     radius                     = prm.get_double("Enrichment radius");
     tip_quadrature_points      = prm.get_integer("Tip quadrature points");
+    gather                     = prm.get_bool("Gather tip DoFs");
     prm.leave_subsection();
+    const auto text = [](const double x) {
+      std::ostringstream s;
+      s << x;
+      return s.str();
+    };
     check_input(tip_zone != TipZone::geometric || radius > 0,
                 "Enrichment/Tip enrichment = geometric needs Enrichment "
                 "radius > 0 (it is " +
-                  std::to_string(radius) + ").");
+                  text(radius) + ").");
+    check_input(!gather || tip_zone == TipZone::geometric,
+                "Enrichment/Gather tip DoFs = true needs a geometric tip zone "
+                "(Tip enrichment = geometric and an Enrichment radius).");
     check_input(tip_zone == TipZone::geometric || radius == 0,
-                "Enrichment/Enrichment radius = " + std::to_string(radius) +
+                "Enrichment/Enrichment radius = " + text(radius) +
                   " is only used with Tip enrichment = geometric (it is " +
                   zone + ").");
   }
@@ -122,8 +141,15 @@ namespace xcrack
     , heaviside_function(crack)
   {
     for (unsigned int k = 0; k < BranchFunction<dim>::n_functions; ++k)
-      branch_functions.push_back(
-        std::make_unique<BranchFunction<dim>>(crack, k));
+      {
+        branch_functions.push_back(
+          std::make_unique<BranchFunction<dim>>(crack, k));
+        // Gathered DoFs carry F chi over the whole zone (see the class
+        // documentation); chi falls from 1 at half the radius to 0 at it.
+        if (parameters.gather)
+          branch_functions.back()->set_cutoff(0.5 * parameters.radius,
+                                              parameters.radius);
+      }
 
     using Cell = typename Triangulation<dim>::cell_iterator;
     using EnrichmentFunction =
@@ -245,6 +271,7 @@ namespace xcrack
     std::vector<double> volume_plus(tria.n_vertices(), 0.);
     std::vector<double> volume_minus(tria.n_vertices(), 0.);
     std::vector<bool>   directly_split(tria.n_vertices(), false);
+    std::vector<bool>   gathered_zone(tria.n_vertices(), false);
     for (const auto &cell : tria.active_cell_iterators())
       if (!cell->is_artificial())
         {
@@ -288,6 +315,11 @@ namespace xcrack
           double distance = std::numeric_limits<double>::max();
           for (unsigned int v = 0; v < lsn.size(); ++v)
             distance = std::min(distance, std::hypot(lsn[v], lst[v]));
+          // With gathering the zone covers every cell where F chi does not
+          // vanish, so that the gathered hats add up to one there.
+          if (parameters.gather && distance < parameters.radius)
+            for (const unsigned int v : cell->vertex_indices())
+              gathered_zone[cell->vertex_index(v)] = true;
           near_front[cell->active_cell_index()] =
             (kind != CellKind::tip && distance < cell->diameter());
 
@@ -370,13 +402,17 @@ namespace xcrack
               {
                 const Point<dim> &x = cell->vertex(v);
                 tip_vertex[index] =
-                  touches_tip[index] ||
+                  touches_tip[index] || gathered_zone[index] ||
                   (parameters.tip_zone ==
                      EnrichmentParameters::TipZone::geometric &&
                    std::hypot(crack.lsn(x), crack.lst(x)) <= parameters.radius);
               }
-            heaviside_vertex[index] =
-              touches_split[index] && !touches_tip[index] && !tip_vertex[index];
+            // Jump functions stay off the tip zone, whose branch functions
+            // carry the jump; with gathering they stay on: the gathered F1
+            // chi fades out inside the zone and cannot carry it there.
+            heaviside_vertex[index] = touches_split[index] &&
+                                      !touches_tip[index] &&
+                                      (!tip_vertex[index] || parameters.gather);
             // A support the crack barely cuts gives a function that is almost
             // a copy of the standard one, and a nearly singular matrix: drop
             // it. (A vertex that only reaches split cells through hanging-node
@@ -640,6 +676,38 @@ namespace xcrack
                 constraints.add_line(dofs[i]);
             }
         }
+
+    if (!parameters.gather)
+      return;
+    // DOF gathering: the free branch DoFs of each function (copy m of the
+    // branch slot) and component, tied to the smallest of them.
+    std::map<std::pair<unsigned int, unsigned int>,
+             std::set<types::global_dof_index>>
+      groups;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->active_fe_index() >= tip)
+        {
+          const FiniteElement<dim> &fe = cell->get_fe();
+          dofs.resize(fe.n_dofs_per_cell());
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (slot(fe, i) == 2 && !constraints.is_constrained(dofs[i]))
+              {
+                const auto &outer = fe.system_to_base_index(i);
+                const auto &inner = fe.base_element(outer.first.first)
+                                      .system_to_base_index(outer.second);
+                groups[{inner.first.second,
+                        fe.system_to_component_index(i).first}]
+                  .insert(dofs[i]);
+              }
+        }
+    for (const auto &[key, members] : groups)
+      for (const types::global_dof_index dof : members)
+        if (dof != *members.begin())
+          {
+            constraints.add_line(dof);
+            constraints.add_entry(dof, *members.begin(), 1.);
+          }
   }
 
 

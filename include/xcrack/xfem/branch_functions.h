@@ -43,6 +43,15 @@ namespace xcrack
 
     static constexpr unsigned int n_functions = 4;
 
+    /**
+     * Multiply by a cut-off chi(r): 1 for r <= @p inner, 0 for r >= @p outer,
+     * the C1 cubic 1 - 3t^2 + 2t^3 (t = (r - inner)/(outer - inner)) between.
+     * With DOF gathering the zone then carries F chi, which vanishes with
+     * its gradient before the zone ends: no blending cells.
+     */
+    void
+    set_cutoff(const double inner, const double outer);
+
   private:
     /// F and its derivatives with respect to r and theta.
     std::array<double, 3>
@@ -50,6 +59,8 @@ namespace xcrack
 
     const CrackGeometry<dim> &crack;
     const unsigned int        index;
+    double                    cutoff_inner = 0;
+    double                    cutoff_outer = 0;
   };
 } // namespace xcrack
 

@@ -31,7 +31,8 @@ namespace xcrack
    *   deform between the nodes right where the front meets it (measured on
    *   Case 1 in 3D: 0.26 energy error instead of 0.14, a boundary layer at
    *   the faces z = +-1); zeroing them would smear the singular field
-   *   instead.
+   *   instead. With DOF gathering the branch DoFs are shared by the whole
+   *   zone and only the standard DoF is constrained, nodally.
    *
    * Call after the hanging-node and enrichment constraints: a node carries
    * one copy of its DoFs per element used around it, tied together by the

@@ -70,6 +70,7 @@ namespace xcrack
     TipZone      tip_zone                   = TipZone::topological;
     double       radius                     = 0;
     unsigned int tip_quadrature_points      = 6;
+    bool         gather                     = false;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -122,8 +123,13 @@ namespace xcrack
    * the crack beyond the volume tolerance, no tip cell), also inside the
    * tip zone.
    *
-   * Not yet: DOF gathering, shifted enrichment, several cracks, fit to
-   * vertex.
+   * DOF gathering (`Gather tip DoFs`, 2D, one rank): the branch DoFs of
+   * each function and component are tied to one over the tip zone, so the
+   * zone carries F_k itself (times a partition of unity that is one inside
+   * it) at the cost of 4 x dim unknowns.
+   *
+   * Not yet: gathering in 3D (per front segment) and on several ranks,
+   * shifted enrichment, several cracks, fit to vertex.
    */
   template <int dim>
   class Enrichment
@@ -154,8 +160,8 @@ namespace xcrack
 
     /**
      * Add to @p constraints the zero constraints of the enriched DoFs that
-     * are not enriched. Call after the hanging-node constraints and before
-     * the Dirichlet ones.
+     * are not enriched, and with gathering the ties of the branch DoFs.
+     * Call after the hanging-node constraints and before the Dirichlet ones.
      */
     void
     make_constraints(const DoFHandler<dim>     &dof_handler,
