@@ -94,14 +94,15 @@ namespace xcrack
 
     /**
      * Reinitialise on @p cell and return the FEValues to integrate with:
-     * @p hp_fe_values for cells integrated by a Gauss rule, or @p split_values
-     * built with the cut-cell rule of @p n_points_1d points per direction and
-     * side for the cells a crack splits.
+     * @p hp_fe_values for cells integrated by a Gauss rule, or
+     * @p special_values built with the rule Enrichment::special_quadrature()
+     * gives for the cells a crack splits or whose front is near (at least
+     * @p n_points_1d points per direction).
      */
     const FEValues<dim> &
     reinit_fe_values(const typename DoFHandler<dim>::active_cell_iterator &cell,
                      hp::FEValues<dim>              &hp_fe_values,
-                     std::unique_ptr<FEValues<dim>> &split_values,
+                     std::unique_ptr<FEValues<dim>> &special_values,
                      const unsigned int              n_points_1d) const;
 
     MPI_Comm           mpi_communicator;

@@ -240,19 +240,19 @@ namespace xcrack
   ElasticityProblem<dim>::reinit_fe_values(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     hp::FEValues<dim>                                    &hp_fe_values,
-    std::unique_ptr<FEValues<dim>>                       &split_values,
+    std::unique_ptr<FEValues<dim>>                       &special_values,
     const unsigned int                                    n_points_1d) const
   {
     if (const Quadrature<dim> *rule =
           (enrichment ? enrichment->special_quadrature(cell, n_points_1d) :
                         nullptr))
       {
-        split_values =
+        special_values =
           std::make_unique<FEValues<dim>>(cell->get_fe(),
                                           *rule,
                                           hp_fe_values.get_update_flags());
-        split_values->reinit(cell);
-        return *split_values;
+        special_values->reinit(cell);
+        return *special_values;
       }
     hp_fe_values.reinit(cell);
     return hp_fe_values.get_present_fe_values();
@@ -287,13 +287,13 @@ namespace xcrack
     std::vector<SymmetricTensor<2, dim>> eps;
     std::vector<double>                  div;
     std::vector<Vector<double>>          load;
-    std::unique_ptr<FEValues<dim>>       split_values;
+    std::unique_ptr<FEValues<dim>>       special_values;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           const FEValues<dim> &fe_values =
-            reinit_fe_values(cell, hp_fe_values, split_values, degree + 1);
+            reinit_fe_values(cell, hp_fe_values, special_values, degree + 1);
           const unsigned int n_dofs = fe_values.dofs_per_cell;
           cell_matrix.reinit(n_dofs, n_dofs);
           cell_rhs.reinit(n_dofs);
@@ -430,13 +430,13 @@ namespace xcrack
     std::vector<SymmetricTensor<2, dim>>     eps_h;
     std::vector<Vector<double>>              u;
     std::vector<std::vector<Tensor<1, dim>>> grad_u;
-    std::unique_ptr<FEValues<dim>>           split_values;
+    std::unique_ptr<FEValues<dim>>           special_values;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           const FEValues<dim> &fe_values =
-            reinit_fe_values(cell, hp_fe_values, split_values, degree + 3);
+            reinit_fe_values(cell, hp_fe_values, special_values, degree + 3);
           const unsigned int n_q = fe_values.n_quadrature_points;
           uh.resize(n_q);
           eps_h.resize(n_q);
