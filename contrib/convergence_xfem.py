@@ -12,14 +12,11 @@ against the DoFs in doc/figures/case1_convergence.png.
     python3 contrib/convergence_xfem.py [--ranks 2] [--quick]
 """
 import argparse
-import csv
 import math
 import os
-import subprocess
 import tempfile
 
-top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-xcrack = os.path.join(top, "build", "release", "xcrack")
+from xcrack_runs import run_xcrack, top
 
 GEOMETRIC = "set Tip enrichment = geometric\n  set Enrichment radius = 0.25"
 TOPOLOGICAL = "set Tip enrichment = topological\n  set Enrichment radius = 0"
@@ -45,21 +42,15 @@ runs = [
 
 
 def run(work, benchmark, degree, cycles, enrichment, extra, ranks):
-    prm = os.path.join(work, "run.prm")
-    with open(prm, "w") as f:
-        f.write(f"include {top}/prm/benchmarks/{benchmark}.prm\n"
-                f"set Output directory = {work}/out\n"
-                f"subsection Discretization\n  set Degree = {degree}\nend\n"
-                f"subsection Enrichment\n  {enrichment}\nend\n"
-                f"subsection Mesh refinement\n  set Number of cycles = {cycles}\nend\n"
-                "subsection Output\n  set Timing summary = false\nend\n" + extra)
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OPENBLAS_NUM_THREADS="1")
-    command = ([xcrack, prm] if ranks == 1 else
-               ["mpirun", "-np", str(ranks), xcrack, prm])
-    subprocess.run(command, check=True, env=env, stdout=subprocess.DEVNULL)
-    with open(os.path.join(work, "out", "statistics.csv")) as f:
-        return list(csv.DictReader(f))
+    return run_xcrack(
+        f"include {top}/prm/benchmarks/{benchmark}.prm\n"
+        f"set Output directory = {work}/out\n"
+        f"subsection Discretization\n  set Degree = {degree}\n"
+        "end\n"
+        f"subsection Enrichment\n  {enrichment}\nend\n"
+        f"subsection Mesh refinement\n  set Number of cycles = {cycles}\nend\n"
+        "subsection Output\n  set Timing summary = false\nend\n" + extra,
+        work, ranks)
 
 
 def print_table(label, rows, dim):

@@ -14,33 +14,19 @@ data, no crack), measured in the same run.
     python3 contrib/study_tip_enrichment.py [--runs 3] [--cycles 5]
 """
 import argparse
-import csv
-import os
 import statistics
-import subprocess
 import tempfile
 
-top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-xcrack = os.path.join(top, "build", "release", "xcrack")
+from xcrack_runs import run_xcrack, top
 
 
 def run(work, benchmark, cycles, entries, ranks, repeats):
     """Last row of statistics.csv, with median times over the repeats."""
-    prm = os.path.join(work, "run.prm")
-    with open(prm, "w") as f:
-        f.write(f"include {top}/prm/benchmarks/{benchmark}.prm\n"
-                f"set Output directory = {work}/out\n"
-                f"subsection Mesh refinement\n  set Number of cycles = {cycles}\nend\n"
-                "subsection Output\n  set Timing summary = false\nend\n" + entries)
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OPENBLAS_NUM_THREADS="1")
-    command = ([xcrack, prm] if ranks == 1 else
-               ["mpirun", "-np", str(ranks), xcrack, prm])
-    rows = []
-    for _ in range(repeats):
-        subprocess.run(command, check=True, env=env, stdout=subprocess.DEVNULL)
-        with open(os.path.join(work, "out", "statistics.csv")) as f:
-            rows.append(list(csv.DictReader(f))[-1])
+    text = (f"include {top}/prm/benchmarks/{benchmark}.prm\n"
+            f"set Output directory = {work}/out\n"
+            f"subsection Mesh refinement\n  set Number of cycles = {cycles}\nend\n"
+            "subsection Output\n  set Timing summary = false\nend\n" + entries)
+    rows = [run_xcrack(text, work, ranks)[-1] for _ in range(repeats)]
     result = dict(rows[0])
     for t in ("t_setup", "t_assemble", "t_solve"):
         result[t] = statistics.median(float(r[t]) for r in rows)
