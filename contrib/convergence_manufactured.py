@@ -9,14 +9,10 @@ the measured orders against the mean cell size h = cells^(-1/dim).
     python3 contrib/convergence_manufactured.py [--ranks 2]
 """
 import argparse
-import csv
 import math
-import os
-import subprocess
 import tempfile
 
-top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-xcrack = os.path.join(top, "build", "release", "xcrack")
+from xcrack_runs import run_xcrack, top
 
 # (benchmark, degree, number of cycles): the finest meshes stay below ~1 min.
 runs = [("manufactured_2d", 1, 7), ("manufactured_2d", 2, 6),
@@ -27,21 +23,15 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--ranks", type=int, default=2)
     args = parser.parse_args()
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OPENBLAS_NUM_THREADS="1")
     with tempfile.TemporaryDirectory() as work:
         for name, degree, cycles in runs:
-            prm = os.path.join(work, "run.prm")
-            with open(prm, "w") as f:
-                f.write(f"include {top}/prm/benchmarks/{name}.prm\n"
-                        f"set Output directory = {work}/out\n"
-                        f"subsection Discretization\n  set Degree = {degree}\nend\n"
-                        f"subsection Mesh refinement\n  set Number of cycles = {cycles}\nend\n"
-                        "subsection Output\n  set Timing summary = false\nend\n")
-            command = ["mpirun", "-np", str(args.ranks), xcrack, prm]
-            subprocess.run(command, check=True, env=env, stdout=subprocess.DEVNULL)
-            with open(os.path.join(work, "out", "statistics.csv")) as f:
-                rows = list(csv.DictReader(f))
+            rows = run_xcrack(
+                f"include {top}/prm/benchmarks/{name}.prm\n"
+                f"set Output directory = {work}/out\n"
+                f"subsection Discretization\n  set Degree = {degree}\nend\n"
+                f"subsection Mesh refinement\n  set Number of cycles = {cycles}\nend\n"
+                "subsection Output\n  set Timing summary = false\nend\n",
+                work, args.ranks)
             dim = 2 if name.endswith("2d") else 3
             print(f"\n**{name}, Q{degree}** (optimal orders: L2 {degree + 1}, "
                   f"energy {degree}; {args.ranks} ranks, direct solver)\n")

@@ -32,7 +32,7 @@ integrate_below(const CrackGeometry<dim> &crack)
   Triangulation<dim> tria;
   GridGenerator::subdivided_hyper_cube(tria, 3);
   tria.refine_global(1);
-  DoFHandler<dim> dof_handler(tria);
+  DoFHandler<dim>      dof_handler(tria);
   EnrichmentParameters parameters;
   parameters.heaviside_volume_tolerance = 0;
   Enrichment<dim> enrichment(crack, 1, parameters);

@@ -27,7 +27,6 @@
 #include <xcrack/xfem/enrichment.h>
 
 #include <memory>
-#include <tuple>
 #include <vector>
 
 namespace xcrack

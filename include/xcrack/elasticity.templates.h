@@ -22,12 +22,10 @@
 #include <xcrack/output.h>
 #include <xcrack/xfem/enriched_dirichlet.h>
 
-#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
-#include <set>
 
 namespace xcrack
 {
