@@ -34,6 +34,12 @@ namespace xcrack
                         "",
                         Patterns::Anything(),
                         "Force per volume 'fx; fy[; fz]'; empty for none.");
+      prm.declare_entry("Lip pressure",
+                        "",
+                        Patterns::Anything(),
+                        "Pressure on both lips of every crack (positive "
+                        "pushes them apart), an expression of x, y[, z]; "
+                        "empty for traction-free lips.");
     }
     prm.leave_subsection();
   }
@@ -89,6 +95,7 @@ namespace xcrack
     const std::string mask_text       = prm.get("Dirichlet components");
     const std::string neumann_text    = prm.get("Neumann");
     const std::string body_force_text = prm.get("Body force");
+    const std::string pressure_text   = prm.get("Lip pressure");
     prm.leave_subsection();
 
     const std::string section = "Boundary conditions/";
@@ -168,6 +175,10 @@ namespace xcrack
     if (!Utilities::trim(body_force_text).empty())
       body_force = std::make_unique<ParsedVectorFunction<dim>>(
         body_force_text, dim, constants, section + "Body force");
+    lip_pressure.reset();
+    if (!Utilities::trim(pressure_text).empty())
+      lip_pressure = std::make_unique<ParsedVectorFunction<dim>>(
+        pressure_text, 1, constants, section + "Lip pressure");
   }
 
 

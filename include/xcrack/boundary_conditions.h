@@ -19,8 +19,8 @@ namespace xcrack
   /**
    * Loads and supports of the elasticity problem (`subsection Boundary
    * conditions`): prescribed displacements and tractions per boundary id,
-   * and a body force. Each boundary entry is a list of
-   * `id: expr_x; expr_y[; expr_z]` items separated by `|`, e.g.
+   * a body force, and a pressure on the crack lips. Each boundary entry is a
+   * list of `id: expr_x; expr_y[; expr_z]` items separated by `|`, e.g.
    *
    *     set Dirichlet = 0: 0; 0 | 1: 0.01*y; 0
    *     set Dirichlet components = 1: x
@@ -60,6 +60,8 @@ namespace xcrack
     std::map<types::boundary_id, ComponentMask>                  dirichlet_mask;
     std::map<types::boundary_id, std::unique_ptr<Function<dim>>> neumann;
     std::unique_ptr<Function<dim>>                               body_force;
+    /// Pressure on the crack lips (null: traction-free lips).
+    std::unique_ptr<Function<dim>> lip_pressure;
   };
 } // namespace xcrack
 

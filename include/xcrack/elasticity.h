@@ -17,6 +17,7 @@
 
 #include <xcrack/boundary_conditions.h>
 #include <xcrack/crack/crack_set.h>
+#include <xcrack/crack/crack_surface.h>
 #include <xcrack/crack/level_set_fields.h>
 #include <xcrack/linear_solver.h>
 #include <xcrack/material.h>
@@ -68,6 +69,12 @@ namespace xcrack
   private:
     void
     update_level_sets();
+
+    /// Extract the crack from the level-set fields, report its size,
+    /// front and largest opening, and add them to the statistics.
+    void
+    report_crack_surface();
+
     void
     setup_system();
     /// Dirichlet constraints, aware of enriched DoFs on the boundary.
@@ -75,6 +82,17 @@ namespace xcrack
     make_dirichlet_constraints();
     void
     assemble_system();
+
+    /**
+     * Add the work of the lip pressure in @p cell to @p cell_rhs: the
+     * integral over the lips in the cell of p n . [[phi_i]], where n points
+     * to the lsn > 0 lip and [[phi_i]] is the jump of the shape function
+     * across the crack (only enriched functions jump). The jumps are taken
+     * from values a hair's breadth off the crack on each side.
+     */
+    void
+    add_lip_pressure(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                     Vector<double> &cell_rhs) const;
     unsigned int
     solve();
     /// Relative L2 and energy-norm errors against the exact solution.
@@ -130,6 +148,8 @@ namespace xcrack
     hp::QCollection<dim - 1>                  face_quadrature_collection;
     DoFHandler<dim>                           dof_handler;
     LevelSetFields<dim>                       level_sets;
+    /// The crack as the level-set fields draw it (lips and ordered front).
+    CrackSurface<dim> crack_surface;
 
     IndexSet                       locally_owned_dofs;
     IndexSet                       locally_relevant_dofs;

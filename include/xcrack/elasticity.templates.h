@@ -20,6 +20,7 @@
 #include <xcrack/exact_solution.h>
 #include <xcrack/input_error.h>
 #include <xcrack/output.h>
+#include <xcrack/xfem/cell_quadrature.h>
 #include <xcrack/xfem/enriched_dirichlet.h>
 
 #include <cmath>
@@ -97,6 +98,9 @@ namespace xcrack
     check_input(cracks.size() <= 1,
                 "Cracks/Number of cracks = " + std::to_string(cracks.size()) +
                   ": the X-FEM enrichment handles one crack for now.");
+    check_input(!boundary_conditions.lip_pressure || cracks.size() > 0,
+                "Boundary conditions/Lip pressure is set but there is no "
+                "crack (Cracks/Number of cracks = 0).");
     if (cracks.size() == 1)
       {
         EnrichmentParameters enrichment_parameters;
@@ -205,6 +209,41 @@ namespace xcrack
       return;
     TimerOutput::Scope t(*timer, "levelset");
     level_sets.update(cracks);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticityProblem<dim>::report_crack_surface()
+  {
+    crack_surface.extract(level_sets, 0);
+    const double opening = crack_surface.max_opening(dof_handler, solution);
+    statistics.add_value("crack_measure", crack_surface.measure());
+    statistics.add_value("front_length", crack_surface.front_length());
+    statistics.add_value("max_opening", opening);
+
+    std::ostringstream line;
+    line << std::setprecision(6);
+    if (dim == 2)
+      {
+        line << "  crack: length " << crack_surface.measure() << ", tips at";
+        for (const auto &front : crack_surface.fronts())
+          line << " (" << front[0].position << ")";
+      }
+    else
+      {
+        unsigned int n_points = 0;
+        for (const auto &front : crack_surface.fronts())
+          n_points += front.size();
+        line << "  crack: area " << crack_surface.measure() << ", front length "
+             << crack_surface.front_length() << " (" << n_points << " points, "
+             << crack_surface.fronts().size()
+             << (crack_surface.fronts().size() == 1 ? " front)" : " fronts)");
+      }
+    line << std::scientific << std::setprecision(4) << ", largest opening "
+         << opening;
+    pcout << line.str() << std::endl;
   }
 
 
@@ -357,6 +396,10 @@ namespace xcrack
                     }
               }
 
+          if (boundary_conditions.lip_pressure &&
+              (enrichment->is_split(cell) || enrichment->is_tip(cell)))
+            add_lip_pressure(cell, cell_rhs);
+
           local_dof_indices.resize(n_dofs);
           cell->get_dof_indices(local_dof_indices);
           constraints.distribute_local_to_global(cell_matrix,
@@ -368,6 +411,67 @@ namespace xcrack
 
     system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticityProblem<dim>::add_lip_pressure(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    Vector<double>                                       &cell_rhs) const
+  {
+    std::vector<double> lsn, lst;
+    for (const unsigned int v : cell->vertex_indices())
+      {
+        lsn.push_back(cracks[0].lsn(cell->vertex(v)));
+        lst.push_back(cracks[0].lst(cell->vertex(v)));
+      }
+    // Where the front crosses a 3D cell, four boxes per direction
+    // (CellQuadrature::lip_rule; 2D tip cells are split exactly).
+    // On the lips of a tip cell the jumps of the branch functions grow like
+    // sqrt(r) from the front: Gauss rules need more points there (2 points
+    // on sqrt(x) over [0, 1] err by 1 %, 6 points by 5e-4).
+    const unsigned int n_points =
+      (enrichment->is_tip(cell) ?
+         std::max(degree + 1,
+                  enrichment->get_parameters().tip_quadrature_points) :
+         degree + 1);
+    const auto rule = CellQuadrature::lip_rule<dim>(lsn, lst, n_points, 4);
+    if (rule.size() == 0)
+      return;
+    const double            offset = 1e-8;
+    std::vector<Point<dim>> plus, minus;
+    for (unsigned int q = 0; q < rule.size(); ++q)
+      {
+        plus.push_back(rule.point(q) + offset * rule.normal_vector(q));
+        minus.push_back(rule.point(q) - offset * rule.normal_vector(q));
+      }
+    const FiniteElement<dim> &fe = cell->get_fe();
+    FEValues<dim>             plus_values(fe,
+                              Quadrature<dim>(plus),
+                              update_values | update_quadrature_points |
+                                update_jacobians);
+    FEValues<dim> minus_values(fe, Quadrature<dim>(minus), update_values);
+    plus_values.reinit(cell);
+    minus_values.reinit(cell);
+    for (unsigned int q = 0; q < rule.size(); ++q)
+      {
+        // Nanson: n ds = det(J) J^-T N dS, with N and dS of the reference
+        // rule.
+        const Tensor<2, dim> J    = plus_values.jacobian(q);
+        const Tensor<1, dim> n_ds = determinant(J) * transpose(invert(J)) *
+                                    rule.normal_vector(q) * rule.weight(q);
+        const double p = boundary_conditions.lip_pressure->value(
+          plus_values.quadrature_point(q));
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          {
+            const unsigned int c = fe.system_to_component_index(i).first;
+            cell_rhs(i) +=
+              p * n_ds[c] *
+              (plus_values.shape_value(i, q) - minus_values.shape_value(i, q));
+          }
+      }
   }
 
 
@@ -571,6 +675,11 @@ namespace xcrack
                                  "lst" + suffix);
       }
     data_out.build_patches(degree);
+    if (enrichment)
+      crack_surface.write_vtu(run_parameters.output_directory + "/crack-" +
+                                Utilities::int_to_string(cycle, 3) + ".vtu",
+                              dof_handler,
+                              solution);
 
     const std::string  dir  = run_parameters.output_directory + "/";
     const std::string  base = "solution-" + Utilities::int_to_string(cycle, 3);
@@ -681,10 +790,11 @@ namespace xcrack
             TimerOutput::Scope t(*timer, "refine");
             refinement.refine(triangulation, dof_handler, solution);
           }
-        // The level-set fields are only written for now (enrichment reads the
-        // crack geometry itself); propagation will update them every step.
-        if (run_parameters.write_vtu)
-          update_level_sets();
+        // The level-set fields give the crack as the mesh sees it (lips and
+        // front, written and reported below); the enrichment still reads the
+        // analytic geometry, which the fields interpolate. Propagation will
+        // update the fields every step.
+        update_level_sets();
         setup_system();
         assemble_system();
         const unsigned int iterations = solve();
@@ -723,6 +833,8 @@ namespace xcrack
                   << l2 << ", energy error " << energy << std::defaultfloat;
           }
         pcout << std::endl;
+        if (enrichment)
+          report_crack_surface();
 
         if (run_parameters.write_vtu)
           output_results(cycle);

@@ -68,8 +68,10 @@ namespace xcrack
   SegmentCrack::lst(const Point<2> &p) const
   {
     // Distance ahead of each tip along its own e1; a mouth does not bound
-    // the crack, so the crack extends indefinitely behind it.
-    double value = -std::numeric_limits<double>::max();
+    // the crack, so the crack extends indefinitely behind it: without tips,
+    // "far behind" is a large but finite number, which interpolation on a
+    // cell (sums of value times shape function) can still handle.
+    double value = -1e100;
     if (end_is_tip)
       value = std::max(value, (p - end) * tangent);
     if (start_is_tip)

@@ -4,6 +4,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <xcrack/crack/crack_set.h>
+#include <xcrack/crack/mesh_crack.h>
 #include <xcrack/input_error.h>
 #include <xcrack/parsed_function.h>
 
@@ -39,12 +40,14 @@ namespace xcrack
       for (unsigned int i = 1; i <= max_cracks; ++i)
         {
           prm.enter_subsection("Crack " + std::to_string(i));
-          prm.declare_entry("Shape",
-                            "segment",
-                            Patterns::Selection(
-                              "segment|half plane|penny|ellipse|rectangle"),
-                            "2D: segment. 3D: half plane, penny, ellipse, "
-                            "rectangle.");
+          prm.declare_entry(
+            "Shape",
+            "segment",
+            Patterns::Selection(
+              "segment|half plane|penny|ellipse|rectangle|mesh"),
+            "2D: segment or mesh. 3D: half plane, penny, "
+            "ellipse, rectangle or mesh (a crack surface "
+            "mesh read from 'File name').");
           prm.declare_entry("Start point",
                             "0, 0",
                             Patterns::Anything(),
@@ -87,6 +90,22 @@ namespace xcrack
                             Patterns::Anything(),
                             "Rectangle: width (along the in-plane "
                             "direction), height.");
+          prm.declare_entry(
+            "File name",
+            "",
+            Patterns::Anything(),
+            "Mesh: the crack surface, triangles or quadrilaterals in 3D, "
+            "line segments in 2D, in a Gmsh (.msh, ASCII 2.2 or 4.1) or "
+            "legacy VTK (.vtk, ASCII) file. Its boundary is the front where "
+            "it lies inside the body and a mouth elsewhere. A relative path "
+            "is taken from the directory the run starts in.");
+          prm.declare_entry(
+            "Level set band",
+            "0",
+            Patterns::Double(0),
+            "Mesh: level sets by projection only within this distance of "
+            "the crack's bounding box (0: everywhere); farther nodes get "
+            "the side of the crack only. Keep it several cells wide.");
           prm.leave_subsection();
         }
     }
@@ -108,9 +127,13 @@ namespace xcrack
     create_crack(ParameterHandler &prm, const std::string &name)
     {
       const std::string shape = prm.get("Shape");
+      if (shape == "mesh")
+        return std::make_unique<MeshCrack<2>>(prm.get("File name"),
+                                              name + "File name",
+                                              prm.get_double("Level set band"));
       check_input(shape == "segment",
                   name + "Shape = " + shape +
-                    ": a 2D run supports the shape 'segment' only.");
+                    ": a 2D run supports the shapes 'segment' and 'mesh'.");
       const Point<2> start =
         Point<2>(parse_vector<2>(prm.get("Start point"), name + "Start point"));
       const Point<2> end =
@@ -132,7 +155,11 @@ namespace xcrack
       const std::string shape = prm.get("Shape");
       check_input(shape != "segment",
                   name + "Shape = segment: a 3D run needs a surface "
-                         "(half plane, penny, ellipse, rectangle).");
+                         "(half plane, penny, ellipse, rectangle, mesh).");
+      if (shape == "mesh")
+        return std::make_unique<MeshCrack<3>>(prm.get("File name"),
+                                              name + "File name",
+                                              prm.get_double("Level set band"));
       const Point<3> center =
         Point<3>(parse_vector<3>(prm.get("Center"), name + "Center"));
       const Tensor<1, 3> normal =
@@ -199,8 +226,11 @@ namespace xcrack
   template <int dim>
   void
   CrackSet<dim>::check_against(
-    const parallel::distributed::Triangulation<dim> &mesh) const
+    const parallel::distributed::Triangulation<dim> &mesh)
   {
+    for (auto &crack : cracks)
+      crack->locate_in(mesh);
+
     const MPI_Comm comm = mesh.get_communicator();
     // The coarse cells, present on every rank, span the whole body.
     const BoundingBox<dim> body = GridTools::compute_bounding_box(mesh);

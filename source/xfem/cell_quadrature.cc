@@ -3,6 +3,7 @@
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/base/numbers.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
 
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/hp/q_collection.h>
@@ -320,6 +321,79 @@ namespace xcrack
 
 
 
+    template <int dim>
+    NonMatching::ImmersedSurfaceQuadrature<dim>
+    lip_rule(const std::vector<double> &lsn,
+             const std::vector<double> &lst,
+             const unsigned int         n_points_1d,
+             const unsigned int         subdivisions)
+    {
+      const ReferenceCellLevelSet<dim>      level_set(lsn);
+      const ReferenceCellLevelSet<dim>      tangent(lst);
+      const hp::QCollection<1>              q1d(QGauss<1>{n_points_1d});
+      NonMatching::QuadratureGenerator<dim> generator(q1d);
+      const bool front_in_cell = *std::max_element(lst.begin(), lst.end()) > 0;
+      if (*std::min_element(lst.begin(), lst.end()) > 0)
+        return {};
+      // The boxes to generate surface rules on: the cell; in 2D with the
+      // tip inside, the two halves split at the tip across the lip's
+      // direction there, so that the lip ends on a box boundary and each
+      // half holds lip either all behind the tip or all ahead of it
+      // (exact); otherwise subdivisions^dim boxes.
+      std::vector<BoundingBox<dim>> boxes;
+      Point<dim>                    one;
+      for (unsigned int d = 0; d < dim; ++d)
+        one[d] = 1;
+      const BoundingBox<dim>  cell(std::make_pair(Point<dim>(), one));
+      std::vector<Point<dim>> tips;
+      if (front_in_cell && dim == 2)
+        tips = front_points<dim>(lsn, lst);
+      if (!front_in_cell)
+        boxes.push_back(cell);
+      else if (tips.size() == 1)
+        {
+          const Tensor<1, dim> g = level_set.gradient(tips[0]);
+          // The lip runs normal to grad lsn: split along the axis it
+          // follows most closely (in 2D the other axis has the larger
+          // gradient component).
+          const unsigned int axis  = (std::abs(g[0]) > std::abs(g[1]) ? 1 : 0);
+          Point<dim>         upper = one, lower;
+          upper[axis]              = tips[0][axis];
+          lower[axis]              = tips[0][axis];
+          for (const auto &box :
+               {BoundingBox<dim>(std::make_pair(Point<dim>(), upper)),
+                BoundingBox<dim>(std::make_pair(lower, one))})
+            if (box.side_length(axis) > 1e-12)
+              boxes.push_back(box);
+        }
+      else
+        for (unsigned int b = 0; b < Utilities::pow(subdivisions, dim); ++b)
+          {
+            Point<dim> lower, upper;
+            for (unsigned int d = 0, k = b; d < dim; ++d, k /= subdivisions)
+              {
+                lower[d] = double(k % subdivisions) / subdivisions;
+                upper[d] = double(k % subdivisions + 1) / subdivisions;
+              }
+            boxes.emplace_back(std::make_pair(lower, upper));
+          }
+
+      NonMatching::ImmersedSurfaceQuadrature<dim> rule;
+      for (const auto &box : boxes)
+        {
+          generator.generate(level_set, box);
+          const auto &surface = generator.get_surface_quadrature();
+          for (unsigned int q = 0; q < surface.size(); ++q)
+            if (!front_in_cell || tangent.value(surface.point(q)) <= 0)
+              rule.push_back(surface.point(q),
+                             surface.weight(q),
+                             surface.normal_vector(q));
+        }
+      return rule;
+    }
+
+
+
     namespace
     {
       std::vector<Point<2>>
@@ -536,5 +610,15 @@ namespace xcrack
     cut_cell_rule<2>(const std::vector<double> &, const unsigned int);
     template std::pair<Quadrature<3>, double>
     cut_cell_rule<3>(const std::vector<double> &, const unsigned int);
+    template NonMatching::ImmersedSurfaceQuadrature<2>
+    lip_rule<2>(const std::vector<double> &,
+                const std::vector<double> &,
+                const unsigned int,
+                const unsigned int);
+    template NonMatching::ImmersedSurfaceQuadrature<3>
+    lip_rule<3>(const std::vector<double> &,
+                const std::vector<double> &,
+                const unsigned int,
+                const unsigned int);
   } // namespace CellQuadrature
 } // namespace xcrack

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <tuple>
 
@@ -201,7 +202,7 @@ namespace xcrack
     std::vector<types::global_dof_index>                 dofs;
     const QGauss<dim - 1>                                face_rule(3);
     const FE_Q<dim - 1>                                  face_q1(1);
-    Vector<double>                                       g(dim), g_sample(dim);
+    Vector<double> g(dim), g_sample(dim), g_beyond(dim);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial() &&
           cell->active_fe_index() != Enrichment<dim>::plain)
@@ -268,6 +269,35 @@ namespace xcrack
                   1e-10 * (face->center() - positions[group]);
                 const int side = (crack.lsn(x) >= 0 ? 1 : -1);
                 bc->second->vector_value(x, g);
+                // A face the crack cuts (a mouth) also holds the other side:
+                // the node's jump DoFs must take the jump of the data, or
+                // the part of the face beyond the crack would be left free
+                // (a roller there let the lips slide along it). The data of
+                // the other side is taken just beyond the crossing nearest
+                // to the node: exact for data constant on each side.
+                std::optional<Point<dim>> beyond;
+                double                    nearest = 0;
+                for (unsigned int l = 0; l < (dim == 2 ? 1 : face->n_lines());
+                     ++l)
+                  {
+                    const Point<dim> a =
+                      (dim == 2 ? face->vertex(0) : face->line(l)->vertex(0));
+                    const Point<dim> b =
+                      (dim == 2 ? face->vertex(1) : face->line(l)->vertex(1));
+                    const double la = crack.lsn(a), lb = crack.lsn(b);
+                    if (la * lb >= 0)
+                      continue;
+                    const Point<dim> crossing = a + la / (la - lb) * (b - a);
+                    const Point<dim> far_end = ((la > 0) == (side > 0) ? b : a);
+                    if (!beyond ||
+                        crossing.distance(positions[group]) < nearest)
+                      {
+                        nearest = crossing.distance(positions[group]);
+                        beyond  = crossing + 1e-10 * (far_end - crossing);
+                      }
+                  }
+                if (beyond)
+                  bc->second->vector_value(*beyond, g_beyond);
                 for (const unsigned int i : members)
                   {
                     const unsigned int c =
@@ -311,6 +341,9 @@ namespace xcrack
                                   "Use a smaller Enrichment/Enrichment radius "
                                   "or Degree = 1.");
                     node.sides[side] = {x, g[c]};
+                    if (beyond)
+                      node.sides.emplace(-side,
+                                         std::make_pair(*beyond, g_beyond[c]));
                     if (group >= face->n_vertices())
                       continue;
                     for (unsigned int q = 0; q < face_rule.size(); ++q)

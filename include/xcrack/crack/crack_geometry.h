@@ -5,6 +5,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <deal.II/grid/tria.h>
+
 #include <memory>
 #include <vector>
 
@@ -76,6 +78,16 @@ namespace xcrack
     /// A box that contains the crack surface, clipped to @p body.
     virtual BoundingBox<dim>
     bounding_box(const BoundingBox<dim> &body) const = 0;
+
+    /**
+     * Called once the body's mesh is known, before the level sets are
+     * used. Analytic shapes need nothing (the level sets extend through
+     * the body's surface); a crack given by a surface mesh decides there
+     * which of its boundary edges are front and which are mouths.
+     */
+    virtual void
+    locate_in(const Triangulation<dim> &)
+    {}
   };
 
 

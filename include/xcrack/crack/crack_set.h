@@ -27,7 +27,8 @@ namespace xcrack
    *   (`Radius`), `ellipse` (`Semi-axes` a along the in-plane direction and
    *   b across it; centre it on a face for a semi-elliptical surface crack),
    *   `rectangle` (`Size`: width along the in-plane direction, height
-   *   across), each with `Center` and `Normal`.
+   *   across), each with `Center` and `Normal`;
+   * - 2D or 3D `mesh`: a crack surface mesh (`File name`, see MeshCrack).
    *
    * check_against() rejects a crack that does not cut the mesh and a tip
    * outside the body, naming the crack.
@@ -46,11 +47,12 @@ namespace xcrack
     parse_parameters(ParameterHandler &prm);
 
     /**
-     * Check each crack against the mesh: its surface must cut at least one
-     * cell, and every 2D tip must lie inside the body.
+     * Place each crack in the mesh (CrackGeometry::locate_in: a crack
+     * surface mesh finds its front there) and check it: its surface must
+     * cut at least one cell, and every 2D tip must lie inside the body.
      */
     void
-    check_against(const parallel::distributed::Triangulation<dim> &mesh) const;
+    check_against(const parallel::distributed::Triangulation<dim> &mesh);
 
     unsigned int
     size() const;

@@ -4,6 +4,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/quadrature.h>
 
+#include <deal.II/non_matching/immersed_surface_quadrature.h>
+
 #include <utility>
 #include <vector>
 
@@ -30,6 +32,25 @@ namespace xcrack
     std::pair<Quadrature<dim>, double>
     cut_cell_rule(const std::vector<double> &lsn,
                   const unsigned int         n_points_1d);
+
+    /**
+     * A rule on the lips in the cell, {lsn = 0, lst <= 0}, for loads on
+     * them (pressure, and later contact): deal.II's surface rule of the
+     * zero set of lsn with @p n_points_1d points per direction, its
+     * weights and normals (grad lsn, pointing to the lsn > 0 lip) in
+     * reference coordinates. Where the front crosses the cell, the lip
+     * ends inside it: in 2D the cell is split at the tip across the lip,
+     * and the half ahead of the tip dropped, which is exact; in 3D the
+     * cell is divided into @p subdivisions^dim boxes, each with its own
+     * surface rule, and the points ahead of the front are dropped, which
+     * is first order in the box size on the cells the front crosses.
+     */
+    template <int dim>
+    NonMatching::ImmersedSurfaceQuadrature<dim>
+    lip_rule(const std::vector<double> &lsn,
+             const std::vector<double> &lst,
+             const unsigned int         n_points_1d,
+             const unsigned int         subdivisions);
 
     /**
      * The points where the crack front {lsn = 0, lst = 0} meets the closed

@@ -1,0 +1,960 @@
+#include <deal.II/base/exceptions.h>
+
+#include <xcrack/crack/mesh_crack.h>
+#include <xcrack/input_error.h>
+
+#include <algorithm>
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+
+namespace xcrack
+{
+  namespace bg  = boost::geometry;
+  namespace bgi = boost::geometry::index;
+
+  template <int dim>
+  struct MeshCrack<dim>::Index
+  {
+    using BPoint = bg::model::point<double, dim, bg::cs::cartesian>;
+    using BBox   = bg::model::box<BPoint>;
+    using Value  = std::pair<BBox, unsigned int>;
+
+    static BPoint
+    to_boost(const Point<dim> &p)
+    {
+      BPoint b;
+      bg::set<0>(b, p[0]);
+      bg::set<1>(b, p[1]);
+      if constexpr (dim == 3)
+        bg::set<2>(b, p[2]);
+      return b;
+    }
+
+    /// The box of half-width @p r around @p p (slightly widened so that
+    /// boxes at distance exactly r count).
+    static BBox
+    ball_box(const Point<dim> &p, const double r)
+    {
+      const double w = r * (1 + 1e-12) + 1e-300;
+      BBox         box(to_boost(p), to_boost(p));
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          Point<dim> x = p;
+          x[d] -= w;
+          bg::expand(box, to_boost(x));
+          x[d] += 2 * w;
+          bg::expand(box, to_boost(x));
+        }
+      return box;
+    }
+
+    static BBox
+    box_of(const std::vector<Point<dim>> &points)
+    {
+      BBox box(to_boost(points[0]), to_boost(points[0]));
+      for (const auto &p : points)
+        bg::expand(box, to_boost(p));
+      return box;
+    }
+
+    bgi::rtree<Value, bgi::rstar<16>> facets;
+    bgi::rtree<Value, bgi::rstar<16>> front;
+  };
+
+
+
+  namespace
+  {
+    /// What a file gave: points and cells as lists of point indices.
+    struct RawMesh
+    {
+      std::vector<std::array<double, 3>>     points;
+      std::vector<std::vector<unsigned int>> polygons;
+      std::vector<std::vector<unsigned int>> lines;
+    };
+
+    std::string
+    lower_extension(const std::string &file_name)
+    {
+      const auto  dot = file_name.find_last_of('.');
+      std::string ext =
+        (dot == std::string::npos ? std::string() : file_name.substr(dot));
+      std::transform(ext.begin(), ext.end(), ext.begin(), [](char c) {
+        return std::tolower(c);
+      });
+      return ext;
+    }
+
+    /**
+     * Gmsh MSH 2.2 or 4.1, ASCII: nodes, and elements of types 1 (line),
+     * 2 (triangle), 3 (quadrangle); other element types are skipped.
+     */
+    RawMesh
+    read_msh(std::istream &in, const std::string &what)
+    {
+      RawMesh                        mesh;
+      std::map<long, unsigned int>   index_of_tag;
+      double                         version = 0;
+      std::vector<std::vector<long>> cells;
+      std::vector<int>               types;
+      const auto                     fail = [&](const std::string &message) {
+        throw InputError(what + ": " + message);
+      };
+      const auto element = [&](const int type, const std::vector<long> &nodes) {
+        const std::map<int, unsigned int> n_nodes = {{1, 2}, {2, 3}, {3, 4}};
+        if (n_nodes.count(type) == 0)
+          return;
+        if (nodes.size() < n_nodes.at(type))
+          fail("an element of type " + std::to_string(type) +
+               " lists too few nodes.");
+        cells.emplace_back(nodes.begin(), nodes.begin() + n_nodes.at(type));
+        types.push_back(type);
+      };
+
+      std::string token;
+      while (in >> token)
+        {
+          if (token == "$MeshFormat")
+            {
+              int file_type = 0, data_size = 0;
+              in >> version >> file_type >> data_size;
+              if (!in || file_type != 0)
+                fail("only ASCII Gmsh files are read (save with "
+                     "'-format msh22' or 'msh41', not binary).");
+              if (version < 2 || version >= 5)
+                fail("Gmsh format version " + std::to_string(version) +
+                     " is not supported (2.2 or 4.1 are).");
+            }
+          else if (token == "$Nodes")
+            {
+              if (version < 4)
+                {
+                  long n = 0;
+                  in >> n;
+                  for (long i = 0; i < n; ++i)
+                    {
+                      long                  tag;
+                      std::array<double, 3> x;
+                      in >> tag >> x[0] >> x[1] >> x[2];
+                      index_of_tag[tag] = mesh.points.size();
+                      mesh.points.push_back(x);
+                    }
+                }
+              else
+                {
+                  long n_blocks = 0, n = 0, min_tag = 0, max_tag = 0;
+                  in >> n_blocks >> n >> min_tag >> max_tag;
+                  for (long b = 0; b < n_blocks && in; ++b)
+                    {
+                      int  entity_dim, entity_tag, parametric;
+                      long n_in_block;
+                      in >> entity_dim >> entity_tag >> parametric >>
+                        n_in_block;
+                      if (parametric != 0)
+                        fail("nodes with parametric coordinates are not read "
+                             "(save without them).");
+                      std::vector<long> tags(n_in_block);
+                      for (auto &t : tags)
+                        in >> t;
+                      for (const long t : tags)
+                        {
+                          std::array<double, 3> x;
+                          in >> x[0] >> x[1] >> x[2];
+                          index_of_tag[t] = mesh.points.size();
+                          mesh.points.push_back(x);
+                        }
+                    }
+                }
+              if (!in)
+                fail("the $Nodes section is truncated or malformed.");
+            }
+          else if (token == "$Elements")
+            {
+              std::string line;
+              if (version < 4)
+                {
+                  long n = 0;
+                  in >> n;
+                  std::getline(in, line);
+                  for (long i = 0; i < n && std::getline(in, line); ++i)
+                    {
+                      std::istringstream s(line);
+                      long               id, type, n_tags;
+                      s >> id >> type >> n_tags;
+                      for (long t = 0, tag; t < n_tags; ++t)
+                        s >> tag;
+                      std::vector<long> nodes;
+                      for (long v; s >> v;)
+                        nodes.push_back(v);
+                      element(type, nodes);
+                    }
+                }
+              else
+                {
+                  long n_blocks = 0, n = 0, min_tag = 0, max_tag = 0;
+                  in >> n_blocks >> n >> min_tag >> max_tag;
+                  for (long b = 0; b < n_blocks && in; ++b)
+                    {
+                      int  entity_dim, entity_tag, type;
+                      long n_in_block;
+                      in >> entity_dim >> entity_tag >> type >> n_in_block;
+                      std::getline(in, line);
+                      for (long i = 0; i < n_in_block && std::getline(in, line);
+                           ++i)
+                        {
+                          std::istringstream s(line);
+                          long               id;
+                          s >> id;
+                          std::vector<long> nodes;
+                          for (long v; s >> v;)
+                            nodes.push_back(v);
+                          element(type, nodes);
+                        }
+                    }
+                }
+              if (!in)
+                fail("the $Elements section is truncated or malformed.");
+            }
+          else if (token.size() > 1 && token[0] == '$' &&
+                   token.rfind("$End", 0) != 0)
+            {
+              // A section xcrack does not need ($Entities, $PhysicalNames...).
+              const std::string end = "$End" + token.substr(1);
+              while (in >> token && token != end)
+                ;
+            }
+        }
+      if (version == 0)
+        fail("not a Gmsh file (no $MeshFormat section).");
+
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        {
+          std::vector<unsigned int> cell;
+          for (const long tag : cells[c])
+            {
+              const auto it = index_of_tag.find(tag);
+              if (it == index_of_tag.end())
+                fail("an element refers to node " + std::to_string(tag) +
+                     ", which the $Nodes section does not define.");
+              cell.push_back(it->second);
+            }
+          (types[c] == 1 ? mesh.lines : mesh.polygons).push_back(cell);
+        }
+      return mesh;
+    }
+
+    /// Legacy ASCII VTK, POLYDATA (POLYGONS, LINES) or UNSTRUCTURED_GRID
+    /// (cell types 3 line, 4 poly-line, 5 triangle, 7 polygon, 9 quad).
+    RawMesh
+    read_vtk(std::istream &in, const std::string &what)
+    {
+      RawMesh    mesh;
+      const auto fail = [&](const std::string &message) {
+        throw InputError(what + ": " + message);
+      };
+      std::string line;
+      std::getline(in, line);
+      if (line.find("vtk DataFile") == std::string::npos)
+        fail("not a legacy VTK file (first line '" + line + "').");
+      std::getline(in, line); // title
+      std::string token;
+      in >> token;
+      if (token != "ASCII")
+        fail("only ASCII VTK files are read, this one is " + token + ".");
+      std::vector<std::vector<unsigned int>> cells;
+      std::vector<int>                       types;
+      bool                                   polydata = false;
+      const auto read_lists = [&](std::vector<std::vector<unsigned int>> &to) {
+        long n = 0, size = 0;
+        in >> n >> size;
+        for (long i = 0; i < n && in; ++i)
+          {
+            long k;
+            in >> k;
+            std::vector<unsigned int> list(k);
+            for (auto &v : list)
+              in >> v;
+            to.push_back(list);
+          }
+      };
+      while (in >> token)
+        {
+          if (token == "DATASET")
+            {
+              in >> token;
+              if (token != "POLYDATA" && token != "UNSTRUCTURED_GRID")
+                fail("DATASET " + token +
+                     " is not read (POLYDATA or UNSTRUCTURED_GRID are).");
+              polydata = (token == "POLYDATA");
+            }
+          else if (token == "POINTS")
+            {
+              long n;
+              in >> n >> token;
+              mesh.points.resize(n);
+              for (auto &x : mesh.points)
+                in >> x[0] >> x[1] >> x[2];
+            }
+          else if (token == "POLYGONS")
+            read_lists(mesh.polygons);
+          else if (token == "LINES")
+            read_lists(mesh.lines);
+          else if (token == "VERTICES")
+            {
+              std::vector<std::vector<unsigned int>> ignored;
+              read_lists(ignored);
+            }
+          else if (token == "CELLS")
+            read_lists(cells);
+          else if (token == "CELL_TYPES")
+            {
+              long n;
+              in >> n;
+              types.resize(n);
+              for (auto &t : types)
+                in >> t;
+            }
+          else if (token == "OFFSETS" || token == "CONNECTIVITY")
+            fail("VTK 5.1 offset/connectivity arrays are not read; save as "
+                 "legacy VTK 4.2.");
+          else if (token == "TRIANGLE_STRIPS")
+            fail("triangle strips are not read; save triangles.");
+          else if (token == "POINT_DATA" || token == "CELL_DATA")
+            break;
+          if (!in)
+            fail("the section " + token + " is truncated or malformed.");
+        }
+      if (!polydata)
+        {
+          if (types.size() != cells.size())
+            fail("CELLS and CELL_TYPES disagree on the number of cells.");
+          for (unsigned int c = 0; c < cells.size(); ++c)
+            if (types[c] == 3 || types[c] == 4)
+              mesh.lines.push_back(cells[c]);
+            else if (types[c] == 5 || types[c] == 7 || types[c] == 9)
+              mesh.polygons.push_back(cells[c]);
+        }
+      for (const auto *lists : {&mesh.polygons, &mesh.lines})
+        for (const auto &list : *lists)
+          for (const unsigned int v : list)
+            if (v >= mesh.points.size())
+              fail("a cell refers to point " + std::to_string(v) + " of " +
+                   std::to_string(mesh.points.size()) + ".");
+      return mesh;
+    }
+
+    /// Distance from @p p to the box @p box (0 inside).
+    template <int dim>
+    double
+    distance_to_box(const BoundingBox<dim> &box, const Point<dim> &p)
+    {
+      double square = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const double out = std::max(
+            {0., box.lower_bound(d) - p[d], p[d] - box.upper_bound(d)});
+          square += out * out;
+        }
+      return std::sqrt(square);
+    }
+
+    template <int dim>
+    std::string
+    to_string(const Point<dim> &p)
+    {
+      std::ostringstream s;
+      s << '(' << p << ')';
+      return s.str();
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  MeshCrack<dim>::MeshCrack(const std::string &file_name,
+                            const std::string &entry,
+                            const double       band)
+    : band(band)
+    , index(std::make_unique<Index>())
+  {
+    read(file_name, entry);
+    orient_and_connect(entry + " = " + file_name);
+    build_front();
+  }
+
+
+
+  template <int dim>
+  MeshCrack<dim>::~MeshCrack() = default;
+
+
+
+  template <int dim>
+  void
+  MeshCrack<dim>::read(const std::string &file_name, const std::string &entry)
+  {
+    const std::string what = entry + " = " + file_name;
+    std::ifstream     in(file_name);
+    check_input(static_cast<bool>(in),
+                what + ": cannot open this file for reading.");
+    const std::string ext = lower_extension(file_name);
+    RawMesh           raw;
+    if (ext == ".msh")
+      raw = read_msh(in, what);
+    else if (ext == ".vtk")
+      raw = read_vtk(in, what);
+    else
+      throw InputError(what + ": unknown extension '" + ext +
+                       "'; crack surfaces are read from Gmsh (.msh) or "
+                       "legacy VTK (.vtk) files.");
+
+    for (const auto &x : raw.points)
+      {
+        Point<dim> p;
+        for (unsigned int d = 0; d < dim; ++d)
+          p[d] = x[d];
+        vertices.push_back(p);
+      }
+    if constexpr (dim == 3)
+      {
+        // Triangles; polygons of more corners are split into a fan.
+        for (const auto &polygon : raw.polygons)
+          for (unsigned int k = 1; k + 1 < polygon.size(); ++k)
+            facets.push_back({polygon[0], polygon[k], polygon[k + 1]});
+        check_input(!facets.empty(),
+                    what + ": no triangles or quadrilaterals in this file; a "
+                           "3D crack is a surface mesh.");
+      }
+    else
+      {
+        for (const auto &line : raw.lines)
+          for (unsigned int k = 0; k + 1 < line.size(); ++k)
+            facets.push_back({line[k], line[k + 1], 0});
+        check_input(!facets.empty(),
+                    what + ": no line segments in this file; a 2D crack is "
+                           "a polyline.");
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  MeshCrack<dim>::orient_and_connect(const std::string &what)
+  {
+    const unsigned int n_corners = (dim == 3 ? 3 : 2);
+    // The "edges" between facets: mesh edges in 3D, vertices in 2D.
+    std::map<std::array<unsigned int, 2>, unsigned int> edge_index;
+    facet_edges.assign(facets.size(), {{0, 0, 0}});
+    for (unsigned int f = 0; f < facets.size(); ++f)
+      for (unsigned int k = 0; k < (dim == 3 ? 3u : 2u); ++k)
+        {
+          std::array<unsigned int, 2> key;
+          if (dim == 3)
+            key = {std::min(facets[f][k], facets[f][(k + 1) % 3]),
+                   std::max(facets[f][k], facets[f][(k + 1) % 3])};
+          else
+            key = {facets[f][k], facets[f][k]};
+          const auto [it, inserted] = edge_index.emplace(key, edges.size());
+          if (inserted)
+            {
+              edges.push_back(key);
+              edge_facets.emplace_back();
+            }
+          edge_facets[it->second].push_back(f);
+          facet_edges[f][k] = it->second;
+        }
+    for (unsigned int e = 0; e < edges.size(); ++e)
+      check_input(edge_facets[e].size() <= 2,
+                  what + ": " + std::to_string(edge_facets[e].size()) +
+                    (dim == 3 ? " triangles share the edge from " :
+                                " segments meet at ") +
+                    to_string(vertices[edges[e][0]]) +
+                    (dim == 3 ? " to " + to_string(vertices[edges[e][1]]) :
+                                std::string()) +
+                    "; a crack surface must not branch.");
+
+    // Orient every facet like its neighbours, starting from the first of
+    // each connected piece. In 3D two neighbours agree if they run through
+    // their common edge in opposite directions; in 2D if one starts where
+    // the other ends.
+    const auto runs_forward = [&](const unsigned int f, const unsigned int e) {
+      if (dim == 3)
+        {
+          for (unsigned int k = 0; k < 3; ++k)
+            if (facets[f][k] == edges[e][0] &&
+                facets[f][(k + 1) % 3] == edges[e][1])
+              return true;
+          return false;
+        }
+      else
+        return facets[f][1] == edges[e][0]; // f ends at the shared vertex
+    };
+    const auto flip = [&](const unsigned int f) {
+      std::swap(facets[f][0], facets[f][1]);
+      // Keep the local edge numbering in step with the corners.
+      if (dim == 3)
+        std::swap(facet_edges[f][1], facet_edges[f][2]);
+      else
+        std::swap(facet_edges[f][0], facet_edges[f][1]);
+    };
+    std::vector<bool> visited(facets.size(), false);
+    for (unsigned int seed = 0; seed < facets.size(); ++seed)
+      {
+        if (visited[seed])
+          continue;
+        visited[seed] = true;
+        std::vector<unsigned int> stack{seed};
+        while (!stack.empty())
+          {
+            const unsigned int f = stack.back();
+            stack.pop_back();
+            for (unsigned int k = 0; k < n_corners; ++k)
+              {
+                const unsigned int e = facet_edges[f][k];
+                for (const unsigned int g : edge_facets[e])
+                  if (g != f)
+                    {
+                      const bool agree =
+                        (runs_forward(f, e) != runs_forward(g, e));
+                      if (!visited[g])
+                        {
+                          if (!agree)
+                            flip(g);
+                          visited[g] = true;
+                          stack.push_back(g);
+                        }
+                      else
+                        check_input(agree,
+                                    what +
+                                      ": the surface cannot be oriented "
+                                      "(a Moebius band?), so its two lips "
+                                      "cannot be told apart; near " +
+                                      to_string(vertices[facets[f][0]]) + ".");
+                    }
+              }
+          }
+      }
+
+    // Normals: of each facet, and angle-weighted at vertices, averaged at
+    // edges.
+    facet_normal.resize(facets.size());
+    vertex_normal.assign(vertices.size(), Tensor<1, dim>());
+    for (unsigned int f = 0; f < facets.size(); ++f)
+      {
+        const auto    &c = facets[f];
+        Tensor<1, dim> n;
+        if constexpr (dim == 3)
+          n = cross_product_3d(vertices[c[1]] - vertices[c[0]],
+                               vertices[c[2]] - vertices[c[0]]);
+        else
+          {
+            const Tensor<1, 2> t = vertices[c[1]] - vertices[c[0]];
+            n[0]                 = -t[1];
+            n[1]                 = t[0];
+          }
+        check_input(n.norm() > 0,
+                    what + ": a degenerate " +
+                      (dim == 3 ? std::string("triangle") :
+                                  std::string("segment")) +
+                      " (zero size) at " + to_string(vertices[c[0]]) + ".");
+        facet_normal[f] = n / n.norm();
+        for (unsigned int k = 0; k < n_corners; ++k)
+          {
+            double weight = 1;
+            if constexpr (dim == 3)
+              {
+                const Tensor<1, 3> a =
+                  vertices[c[(k + 1) % 3]] - vertices[c[k]];
+                const Tensor<1, 3> b =
+                  vertices[c[(k + 2) % 3]] - vertices[c[k]];
+                weight =
+                  std::acos(std::clamp(a * b / (a.norm() * b.norm()), -1., 1.));
+              }
+            vertex_normal[c[k]] += weight * facet_normal[f];
+          }
+      }
+    for (auto &n : vertex_normal)
+      if (n.norm() > 0)
+        n /= n.norm();
+    edge_normal.resize(edges.size());
+    for (unsigned int e = 0; e < edges.size(); ++e)
+      {
+        for (const unsigned int f : edge_facets[e])
+          edge_normal[e] += facet_normal[f];
+        edge_normal[e] /= edge_normal[e].norm();
+      }
+
+    // The boundary, with its outward in-plane normal.
+    for (unsigned int e = 0; e < edges.size(); ++e)
+      if (edge_facets[e].size() == 1)
+        {
+          const unsigned int f = edge_facets[e][0];
+          Tensor<1, dim>     e1;
+          if constexpr (dim == 3)
+            {
+              const Tensor<1, 3> t =
+                vertices[edges[e][1]] - vertices[edges[e][0]];
+              e1 = cross_product_3d(t, facet_normal[f]);
+              const Point<3> centroid =
+                (vertices[facets[f][0]] + vertices[facets[f][1]] +
+                 vertices[facets[f][2]]) /
+                3.;
+              const Point<3> middle =
+                (vertices[edges[e][0]] + vertices[edges[e][1]]) / 2.;
+              if (e1 * (middle - centroid) < 0)
+                e1 = -e1;
+            }
+          else
+            {
+              const unsigned int other =
+                (facets[f][0] == edges[e][0] ? facets[f][1] : facets[f][0]);
+              e1 = vertices[edges[e][0]] - vertices[other];
+            }
+          boundary.push_back(e);
+          boundary_e1.push_back(e1 / e1.norm());
+        }
+    boundary_is_front.assign(boundary.size(), true);
+
+    box = BoundingBox<dim>(vertices);
+    std::vector<typename Index::Value> values;
+    for (unsigned int f = 0; f < facets.size(); ++f)
+      {
+        std::vector<Point<dim>> corners;
+        for (unsigned int k = 0; k < n_corners; ++k)
+          corners.push_back(vertices[facets[f][k]]);
+        values.emplace_back(Index::box_of(corners), f);
+      }
+    index->facets = decltype(index->facets)(values.begin(), values.end());
+  }
+
+
+
+  template <int dim>
+  void
+  MeshCrack<dim>::build_front()
+  {
+    front_elements.clear();
+    front_vertex_e1.assign(vertices.size(), Tensor<1, dim>());
+    std::vector<typename Index::Value> values;
+    for (unsigned int b = 0; b < boundary.size(); ++b)
+      if (boundary_is_front[b])
+        {
+          const auto             &edge = edges[boundary[b]];
+          std::vector<Point<dim>> ends = {vertices[edge[0]], vertices[edge[1]]};
+          values.emplace_back(Index::box_of(ends), front_elements.size());
+          front_elements.push_back(b);
+          front_vertex_e1[edge[0]] += boundary_e1[b];
+          if (dim == 3)
+            front_vertex_e1[edge[1]] += boundary_e1[b];
+        }
+    for (auto &e1 : front_vertex_e1)
+      if (e1.norm() > 0)
+        e1 /= e1.norm();
+    index->front = decltype(index->front)(values.begin(), values.end());
+  }
+
+
+
+  template <int dim>
+  void
+  MeshCrack<dim>::locate_in(const Triangulation<dim> &mesh)
+  {
+    // Strictly inside: the point and points a little off it along every
+    // axis lie in the body (the coarse cells, which every rank has).
+    const auto inside = [&](const Point<dim> &p, const double delta) {
+      const auto in_body = [&](const Point<dim> &x) {
+        for (const auto &cell : mesh.cell_iterators_on_level(0))
+          if (cell->point_inside(x))
+            return true;
+        return false;
+      };
+      if (!in_body(p))
+        return false;
+      for (unsigned int d = 0; d < dim; ++d)
+        for (const double sign : {-1., 1.})
+          {
+            Point<dim> x = p;
+            x[d] += sign * delta;
+            if (!in_body(x))
+              return false;
+          }
+      return true;
+    };
+    const double size = box.side_length(0) + box.side_length(1) +
+                        (dim == 3 ? box.side_length(dim - 1) : 0.);
+    for (unsigned int b = 0; b < boundary.size(); ++b)
+      {
+        const auto      &edge = edges[boundary[b]];
+        const Point<dim> probe =
+          (vertices[edge[0]] + vertices[edge[1]]) / 2.; // 2D: the vertex
+        boundary_is_front[b] = inside(probe, 1e-6 * size);
+      }
+    build_front();
+  }
+
+
+
+  template <int dim>
+  std::pair<Point<dim>, Tensor<1, dim>>
+  MeshCrack<dim>::closest_on_facet(const unsigned int f,
+                                   const Point<dim>  &p) const
+  {
+    const auto &c = facets[f];
+    if constexpr (dim == 2)
+      {
+        const Point<2>    &a = vertices[c[0]], &b = vertices[c[1]];
+        const Tensor<1, 2> t = b - a;
+        const double       s = (p - a) * t / t.norm_square();
+        if (s <= 0)
+          return {a, vertex_normal[c[0]]};
+        if (s >= 1)
+          return {b, vertex_normal[c[1]]};
+        return {a + s * t, facet_normal[f]};
+      }
+    else
+      {
+        // Ericson, Real-Time Collision Detection, 5.1.5: the Voronoi region
+        // of p tells the feature, whose normal decides the side.
+        const Point<3> &a = vertices[c[0]], &b = vertices[c[1]],
+                       &cc    = vertices[c[2]];
+        const Tensor<1, 3> ab = b - a, ac = cc - a, ap = p - a;
+        const double       d1 = ab * ap, d2 = ac * ap;
+        if (d1 <= 0 && d2 <= 0)
+          return {a, vertex_normal[c[0]]};
+        const Tensor<1, 3> bp = p - b;
+        const double       d3 = ab * bp, d4 = ac * bp;
+        if (d3 >= 0 && d4 <= d3)
+          return {b, vertex_normal[c[1]]};
+        const double vc = d1 * d4 - d3 * d2;
+        if (vc <= 0 && d1 >= 0 && d3 <= 0)
+          return {a + d1 / (d1 - d3) * ab, edge_normal[facet_edges[f][0]]};
+        const Tensor<1, 3> cp = p - cc;
+        const double       d5 = ab * cp, d6 = ac * cp;
+        if (d6 >= 0 && d5 <= d6)
+          return {cc, vertex_normal[c[2]]};
+        const double vb = d5 * d2 - d1 * d6;
+        if (vb <= 0 && d2 >= 0 && d6 <= 0)
+          return {a + d2 / (d2 - d6) * ac, edge_normal[facet_edges[f][2]]};
+        const double va = d3 * d6 - d5 * d4;
+        if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+          return {b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (cc - b),
+                  edge_normal[facet_edges[f][1]]};
+        const double denominator = 1. / (va + vb + vc);
+        return {a + vb * denominator * ab + vc * denominator * ac,
+                facet_normal[f]};
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  MeshCrack<dim>::lsn(const Point<dim> &p) const
+  {
+    const auto   bp           = Index::to_boost(p);
+    const double box_distance = distance_to_box(box, p);
+    if (band > 0 && box_distance > band)
+      {
+        // Far from the crack: only the side matters.
+        const auto   nearest = index->facets.qbegin(bgi::nearest(bp, 1));
+        const double side    = (p - vertices[facets[nearest->second][0]]) *
+                            facet_normal[nearest->second];
+        return (side >= 0 ? 1. : -1.) * box_distance;
+      }
+    // The facet whose box is nearest gives an upper bound d of the
+    // distance; the nearest facet is among those whose boxes meet the ball
+    // of radius d, i.e. the box of half-width d around p.
+    const auto first = index->facets.qbegin(bgi::nearest(bp, 1));
+    auto       best  = closest_on_facet(first->second, p);
+    double     d     = p.distance(best.first);
+    std::vector<typename Index::Value> candidates;
+    index->facets.query(bgi::intersects(Index::ball_box(p, d)),
+                        std::back_inserter(candidates));
+    for (const auto &[box, f] : candidates)
+      {
+        const auto c = closest_on_facet(f, p);
+        if (p.distance(c.first) < d)
+          {
+            d    = p.distance(c.first);
+            best = c;
+          }
+      }
+    return (p - best.first) * best.second;
+  }
+
+
+
+  template <int dim>
+  double
+  MeshCrack<dim>::lst(const Point<dim> &p) const
+  {
+    // No front: the crack runs through the body.
+    if (front_elements.empty())
+      return -1e100;
+    const auto   bp           = Index::to_boost(p);
+    const double box_distance = distance_to_box(box, p);
+    if (band > 0 && box_distance > band)
+      return box_distance;
+    // The nearest front point and the outward normal e1 there.
+    const auto closest = [&](const unsigned int k) {
+      const unsigned int b    = front_elements[k];
+      const auto        &edge = edges[boundary[b]];
+      if (dim == 2)
+        return std::make_pair(vertices[edge[0]], boundary_e1[b]);
+      const Point<dim>    &a = vertices[edge[0]];
+      const Tensor<1, dim> t = vertices[edge[1]] - a;
+      const double         s = (p - a) * t / t.norm_square();
+      if (s <= 0)
+        return std::make_pair(a, front_vertex_e1[edge[0]]);
+      if (s >= 1)
+        return std::make_pair(vertices[edge[1]], front_vertex_e1[edge[1]]);
+      return std::make_pair(Point<dim>(a + s * t), boundary_e1[b]);
+    };
+    const auto first = index->front.qbegin(bgi::nearest(bp, 1));
+    auto       best  = closest(first->second);
+    double     d     = p.distance(best.first);
+    std::vector<typename Index::Value> candidates;
+    index->front.query(bgi::intersects(Index::ball_box(p, d)),
+                       std::back_inserter(candidates));
+    for (const auto &[box, k] : candidates)
+      {
+        const auto c = closest(k);
+        if (p.distance(c.first) < d)
+          {
+            d    = p.distance(c.first);
+            best = c;
+          }
+      }
+    return (p - best.first) * best.second;
+  }
+
+
+
+  template <int dim>
+  std::vector<FrontPoint<dim>>
+  MeshCrack<dim>::front(const unsigned int, const BoundingBox<dim> &) const
+  {
+    std::vector<FrontPoint<dim>> points;
+    const auto                   make_point = [&](const unsigned int v) {
+      FrontPoint<dim> p;
+      p.position = vertices[v];
+      p.e1       = front_vertex_e1[v];
+      if constexpr (dim == 2)
+        {
+          p.e2[0] = 0. - p.e1[1];
+          p.e2[1] = p.e1[0];
+        }
+      else
+        {
+          p.e2 = vertex_normal[v] - (vertex_normal[v] * p.e1) * p.e1;
+          p.e2 /= p.e2.norm();
+          p.e3 = cross_product_3d(p.e1, p.e2);
+        }
+      return p;
+    };
+    if constexpr (dim == 2)
+      {
+        for (const unsigned int b : front_elements)
+          points.push_back(make_point(edges[boundary[b]][0]));
+        return points;
+      }
+
+    // Chain the front edges through their shared vertices.
+    std::map<unsigned int, std::vector<unsigned int>> neighbours;
+    for (const unsigned int b : front_elements)
+      {
+        const auto &edge = edges[boundary[b]];
+        neighbours[edge[0]].push_back(edge[1]);
+        neighbours[edge[1]].push_back(edge[0]);
+      }
+    std::map<unsigned int, bool> visited;
+    const auto                   walk = [&](const unsigned int start) {
+      std::vector<unsigned int> chain{start};
+      visited[start] = true;
+      for (bool extended = true; extended;)
+        {
+          extended = false;
+          for (const unsigned int next : neighbours[chain.back()])
+            if (!visited[next])
+              {
+                visited[next] = true;
+                chain.push_back(next);
+                extended = true;
+                break;
+              }
+        }
+      if (chain.size() > 2 && std::count(neighbours[chain.back()].begin(),
+                                         neighbours[chain.back()].end(),
+                                         start) > 0)
+        chain.push_back(start);
+      return chain;
+    };
+    std::vector<std::vector<unsigned int>> chains;
+    for (const auto &[v, n] : neighbours)
+      if (!visited[v] && n.size() == 1)
+        chains.push_back(walk(v));
+    for (const auto &[v, n] : neighbours)
+      if (!visited[v])
+        chains.push_back(walk(v));
+    for (auto &chain : chains)
+      {
+        std::vector<FrontPoint<dim>> front;
+        for (const unsigned int v : chain)
+          front.push_back(make_point(v));
+        double along = 0;
+        for (unsigned int k = 0; k + 1 < front.size(); ++k)
+          along += (front[k + 1].position - front[k].position) * front[k].e3;
+        if (along < 0)
+          std::reverse(front.begin(), front.end());
+        for (unsigned int k = 1; k < front.size(); ++k)
+          front[k].s =
+            front[k - 1].s + front[k].position.distance(front[k - 1].position);
+        points.insert(points.end(), front.begin(), front.end());
+      }
+    return points;
+  }
+
+
+
+  template <int dim>
+  BoundingBox<dim>
+  MeshCrack<dim>::bounding_box(const BoundingBox<dim> &body) const
+  {
+    Point<dim> lower, upper;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower[d] = std::max(box.lower_bound(d), body.lower_bound(d));
+        upper[d] = std::min(box.upper_bound(d), body.upper_bound(d));
+      }
+    return BoundingBox<dim>(std::make_pair(lower, upper));
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  MeshCrack<dim>::n_facets() const
+  {
+    return facets.size();
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  MeshCrack<dim>::n_front_elements() const
+  {
+    return front_elements.size();
+  }
+
+
+
+  template class MeshCrack<2>;
+  template class MeshCrack<3>;
+} // namespace xcrack
