@@ -4,8 +4,120 @@
 #include <xcrack/fracture/williams.h>
 #include <xcrack/input_error.h>
 
+#include <complex>
+
 namespace xcrack
 {
+  namespace
+  {
+    /**
+     * Westergaard's centre crack |x'| < a on y' = 0 (local axes) in an
+     * infinite plate, remote stress (sigma'_xx, sigma'_yy, sigma'_xy):
+     * Z_I = sigma'_yy z / sqrt(z^2 - a^2) (biaxial sigma'_yy), Z_II =
+     * sigma'_xy z / sqrt(z^2 - a^2), and the uniform sigma'_xx - sigma'_yy
+     * along the crack. sqrt(z^2 - a^2) = sqrt(z - a) sqrt(z + a) with
+     * principal roots has its cut on the crack only. Displacements from
+     * 2 mu u = ... (Tada, Paris and Irwin; Anderson, section A2.3).
+     */
+    template <int dim>
+    class GriffithSolution : public Function<dim>
+    {
+    public:
+      GriffithSolution(const Point<dim>          &centre,
+                       const Tensor<1, 2>        &direction,
+                       const double               a,
+                       const std::vector<double> &remote,
+                       const double               mu,
+                       const double               kappa)
+        : Function<dim>(dim)
+        , centre(centre)
+        , t(direction)
+        , a(a)
+        , mu(mu)
+        , kappa(kappa)
+      {
+        n[0] = -t[1];
+        n[1] = t[0];
+        // Remote stress in the crack's axes.
+        const double sxx = remote[0], syy = remote[1], sxy = remote[2];
+        const auto project = [&](const Tensor<1, 2> &u, const Tensor<1, 2> &v) {
+          return u[0] * (sxx * v[0] + sxy * v[1]) +
+                 u[1] * (sxy * v[0] + syy * v[1]);
+        };
+        s_tt = project(t, t);
+        s_nn = project(n, n);
+        s_tn = project(t, n);
+      }
+
+      double
+      value(const Point<dim> &p, const unsigned int component) const override
+      {
+        using C = std::complex<double>;
+        const Tensor<1, 2> d({p[0] - centre[0], p[1] - centre[1]});
+        const double       x = d * t, y = d * n;
+        const C            z(x, y);
+        const C            root = std::sqrt(z - a) * std::sqrt(z + a);
+        const C            Z = z / root, Zbar = root;
+        // Local displacements (u'_x, u'_y) times 2 mu.
+        double ux = s_nn * (0.5 * (kappa - 1) * Zbar.real() - y * Z.imag()) +
+                    s_tn * (0.5 * (kappa + 1) * Zbar.imag() + y * Z.real());
+        double uy = s_nn * (0.5 * (kappa + 1) * Zbar.imag() - y * Z.real()) +
+                    s_tn * (-0.5 * (kappa - 1) * Zbar.real() - y * Z.imag());
+        // Uniform sigma'_xx - sigma'_yy: eps_xx = (kappa + 1)/(8 mu) s,
+        // eps_yy = (kappa - 3)/(8 mu) s, times 2 mu.
+        const double s = s_tt - s_nn;
+        ux += 0.25 * (kappa + 1) * s * x;
+        uy += 0.25 * (kappa - 3) * s * y;
+        ux /= 2 * mu;
+        uy /= 2 * mu;
+        return (component == 0 ? ux * t[0] + uy * n[0] : ux * t[1] + uy * n[1]);
+      }
+
+      /// The gradient in closed form (finite differences would straddle
+      /// the lips at the points the tip rules put next to them).
+      Tensor<1, dim>
+      gradient(const Point<dim> &p, const unsigned int component) const override
+      {
+        using C = std::complex<double>;
+        const Tensor<1, 2> d({p[0] - centre[0], p[1] - centre[1]});
+        const double       y = d * n;
+        const C            z(d * t, y);
+        const C            root = std::sqrt(z - a) * std::sqrt(z + a);
+        const C            Z = z / root, dZ = -a * a / (root * root * root);
+        const double       k = kappa, s = s_tt - s_nn;
+        // Local gradient G[i][j] = d u'_i / d x'_j, times 2 mu.
+        Tensor<2, 2> G;
+        G[0][0] = s_nn * (0.5 * (k - 1) * Z.real() - y * dZ.imag()) +
+                  s_tn * (0.5 * (k + 1) * Z.imag() + y * dZ.real()) +
+                  0.25 * (k + 1) * s;
+        G[0][1] =
+          s_nn * (-0.5 * (k - 1) * Z.imag() - Z.imag() - y * dZ.real()) +
+          s_tn * (0.5 * (k + 1) * Z.real() + Z.real() - y * dZ.imag());
+        G[1][0] = s_nn * (0.5 * (k + 1) * Z.imag() - y * dZ.real()) +
+                  s_tn * (-0.5 * (k - 1) * Z.real() - y * dZ.imag());
+        G[1][1] = s_nn * (0.5 * (k + 1) * Z.real() - Z.real() + y * dZ.imag()) +
+                  s_tn * (0.5 * (k - 1) * Z.imag() - Z.imag() - y * dZ.real()) +
+                  0.25 * (k - 3) * s;
+        // Global: d u_c / d x_j = sum R[i][c] G[i][l] R[l][j], R rows t, n.
+        const Tensor<1, 2> rows[2] = {t, n};
+        Tensor<1, dim>     g;
+        for (unsigned int j = 0; j < 2; ++j)
+          for (unsigned int i = 0; i < 2; ++i)
+            for (unsigned int l = 0; l < 2; ++l)
+              g[j] += rows[i][component] * G[i][l] * rows[l][j] / (2 * mu);
+        return g;
+      }
+
+    private:
+      Point<dim>   centre;
+      Tensor<1, 2> t, n;
+      double       a, mu, kappa;
+      double       s_tt = 0, s_nn = 0, s_tn = 0;
+    };
+  } // namespace
+
+
+
   void
   ExactSolution::declare_parameters(ParameterHandler &prm)
   {
@@ -13,10 +125,22 @@ namespace xcrack
     {
       prm.declare_entry("Type",
                         "parsed",
-                        Patterns::Selection("parsed|williams"),
+                        Patterns::Selection("parsed|williams|griffith"),
                         "parsed: the expressions of Displacement (no exact "
                         "solution if empty); williams: the crack-tip field "
-                        "of BENCHMARKS.md Case 1.");
+                        "of BENCHMARKS.md Case 1; griffith (2D): a centre "
+                        "crack in an infinite plate under a remote stress "
+                        "(Westergaard).");
+      prm.declare_entry("Half-length",
+                        "1",
+                        Patterns::Double(0),
+                        "griffith: half-length a of the crack, centred at "
+                        "Tip along Tip direction.");
+      prm.declare_entry("Remote stress",
+                        "0, 1, 0",
+                        Patterns::Anything(),
+                        "griffith: sigma_xx, sigma_yy, sigma_xy at infinity "
+                        "(global axes).");
       prm.declare_entry("Displacement",
                         "",
                         Patterns::Anything(),
@@ -60,7 +184,26 @@ namespace xcrack
     const std::string tip          = prm.get("Tip");
     const std::string direction    = prm.get("Tip direction");
     const std::string normal       = prm.get("Crack normal");
+    const double      half_length  = prm.get_double("Half-length");
+    const std::string remote       = prm.get("Remote stress");
     prm.leave_subsection();
+
+    if (type == "griffith")
+      {
+        check_input(dim == 2, section + "Type = griffith is a 2D solution.");
+        check_input(half_length > 0, section + "Half-length must be positive.");
+        const std::vector<double> sigma =
+          parse_numbers(remote, 3, section + "Remote stress");
+        Tensor<1, 2> t = parse_vector<2>(direction, section + "Tip direction");
+        check_input(t.norm() > 0, section + "Tip direction is zero.");
+        return std::make_shared<GriffithSolution<dim>>(
+          Point<dim>(parse_vector<dim>(tip, section + "Tip")),
+          t / t.norm(),
+          half_length,
+          sigma,
+          material.mu(),
+          material.kappa(dim));
+      }
 
     if (type == "parsed")
       {

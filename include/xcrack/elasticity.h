@@ -19,12 +19,14 @@
 #include <xcrack/crack/crack_set.h>
 #include <xcrack/crack/crack_surface.h>
 #include <xcrack/crack/level_set_fields.h>
+#include <xcrack/fracture/interaction_integral.h>
 #include <xcrack/linear_solver.h>
 #include <xcrack/material.h>
 #include <xcrack/mesh.h>
 #include <xcrack/parameters.h>
 #include <xcrack/refinement.h>
 #include <xcrack/statistics.h>
+#include <xcrack/xfem/cell_quadrature.h>
 #include <xcrack/xfem/enrichment.h>
 
 #include <memory>
@@ -90,6 +92,18 @@ namespace xcrack
      * across the crack (only enriched functions jump). The jumps are taken
      * from values a hair's breadth off the crack on each side.
      */
+    /// The lip rule of @p cell (empty for a cell without lips).
+    NonMatching::ImmersedSurfaceQuadrature<dim>
+    lip_rule(const typename DoFHandler<dim>::active_cell_iterator &cell) const;
+
+    /**
+     * K and G at the crack tips (InteractionIntegral; 2D only for now):
+     * printed, added to the statistics (per tip, and the error against
+     * `Reference K`), and written to front_<cycle>.csv.
+     */
+    void
+    compute_fracture_parameters(const unsigned int cycle);
+
     void
     add_lip_pressure(const typename DoFHandler<dim>::active_cell_iterator &cell,
                      Vector<double> &cell_rhs) const;
@@ -138,6 +152,7 @@ namespace xcrack
     unsigned int                   degree = 1;
     std::shared_ptr<Function<dim>> exact_solution;
     CrackSet<dim>                  cracks;
+    FractureParameters             fracture_parameters;
     /// The X-FEM enrichment, when there is a crack. Declared before the
     /// finite elements and the DoFHandler: they point to its functions.
     std::unique_ptr<Enrichment<dim>> enrichment;

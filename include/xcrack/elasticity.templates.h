@@ -18,6 +18,8 @@
 #include <xcrack/condition_number.h>
 #include <xcrack/elasticity.h>
 #include <xcrack/exact_solution.h>
+#include <xcrack/fracture/displacement_jump.h>
+#include <xcrack/fracture/interaction_integral.h>
 #include <xcrack/input_error.h>
 #include <xcrack/output.h>
 #include <xcrack/xfem/cell_quadrature.h>
@@ -44,6 +46,7 @@ namespace xcrack
     prm.leave_subsection();
 
     EnrichmentParameters::declare_parameters(prm);
+    FractureParameters::declare_parameters(prm);
   }
 
 
@@ -81,6 +84,12 @@ namespace xcrack
     boundary_conditions.parse_parameters(prm, constants, exact_solution);
     refinement.parse_parameters(prm, constants);
     cracks.parse_parameters(prm);
+    fracture_parameters.parse_parameters(prm, constants);
+    check_input(dim == 2 ? !fracture_parameters.reference_3d :
+                           !fracture_parameters.reference_2d,
+                "Fracture parameters/Reference K: give " +
+                  std::string(dim == 2 ? "'K_I; K_II'" : "'K_I; K_II; K_III'") +
+                  " in " + std::to_string(dim) + "D.");
 
     prm.enter_subsection("Discretization");
     degree = prm.get_integer("Degree");
@@ -416,11 +425,13 @@ namespace xcrack
 
 
   template <int dim>
-  void
-  ElasticityProblem<dim>::add_lip_pressure(
-    const typename DoFHandler<dim>::active_cell_iterator &cell,
-    Vector<double>                                       &cell_rhs) const
+  NonMatching::ImmersedSurfaceQuadrature<dim>
+  ElasticityProblem<dim>::lip_rule(
+    const typename DoFHandler<dim>::active_cell_iterator &cell) const
   {
+    if (!enrichment ||
+        !(enrichment->is_split(cell) || enrichment->is_tip(cell)))
+      return {};
     std::vector<double> lsn, lst;
     for (const unsigned int v : cell->vertex_indices())
       {
@@ -437,7 +448,18 @@ namespace xcrack
          std::max(degree + 1,
                   enrichment->get_parameters().tip_quadrature_points) :
          degree + 1);
-    const auto rule = CellQuadrature::lip_rule<dim>(lsn, lst, n_points, 4);
+    return CellQuadrature::lip_rule<dim>(lsn, lst, n_points, 4);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticityProblem<dim>::add_lip_pressure(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    Vector<double>                                       &cell_rhs) const
+  {
+    const auto rule = lip_rule(cell);
     if (rule.size() == 0)
       return;
     const double            offset = 1e-8;
@@ -744,6 +766,144 @@ namespace xcrack
 
   template <int dim>
   void
+  ElasticityProblem<dim>::compute_fracture_parameters(const unsigned int cycle)
+  {
+    if constexpr (dim == 3)
+      {
+        (void)cycle;
+        return; // Not implemented for 3D fronts yet (see the class doc).
+      }
+    else
+      {
+        TimerOutput::Scope           t(*timer, "fracture");
+        std::vector<FrontPoint<dim>> tips;
+        for (const auto &front : crack_surface.fronts())
+          tips.push_back(front[0]);
+        if (tips.empty())
+          return;
+
+        hp::FEValues<dim>              hp_fe_values(fe_collection,
+                                       quadrature_collection,
+                                       update_values | update_gradients |
+                                         update_quadrature_points |
+                                         update_JxW_values |
+                                         update_inverse_jacobians);
+        std::unique_ptr<FEValues<dim>> special_values;
+        const auto                     fe_values_of =
+          [&](const auto &cell) -> const FEValues<dim> & {
+          return reinit_fe_values(cell,
+                                  hp_fe_values,
+                                  special_values,
+                                  degree + 1);
+        };
+        const auto lips_of = [&](const auto                  &cell,
+                                 std::vector<Point<dim>>     &points,
+                                 std::vector<double>         &weights,
+                                 std::vector<Tensor<1, dim>> &normals) {
+          const auto rule = lip_rule(cell);
+          points          = rule.get_points();
+          weights         = rule.get_weights();
+          normals         = rule.get_normal_vectors();
+        };
+        const InteractionIntegral<dim> integral(fracture_parameters, material);
+        const auto                     values =
+          integral.compute(dof_handler,
+                           solution,
+                           tips,
+                           fe_values_of,
+                           boundary_conditions.lip_pressure.get(),
+                           lips_of);
+
+        // The cross-check by the displacement jumps over the crown.
+        std::vector<std::array<double, 2>> jump_k;
+        for (const auto &v : values)
+          jump_k.push_back(displacement_jump_k(
+            dof_handler, solution, v.point, material, v.r_inf, v.r_sup));
+
+        // Screen, statistics (per tip), front_<cycle>.csv.
+        const auto &reference = fracture_parameters.reference_2d;
+        double      error_I = 0, error_II = 0;
+        for (unsigned int i = 0; i < values.size(); ++i)
+          {
+            const auto &v = values[i];
+            // On screen, K's are rounded to 1e-6 of the tip's largest one:
+            // a K that vanishes by symmetry then reads 0 rather than
+            // round-off that differs between builds (the CSV files and the
+            // statistics keep every digit).
+            const double quantum =
+              1e-6 * std::max({std::abs(v.k_I), std::abs(v.k_II), 1e-300});
+            const auto rounded = [&](const double k) {
+              return std::round(k / quantum) * quantum + 0.;
+            };
+            pcout << "  tip " << i + 1 << std::scientific
+                  << std::setprecision(6) << ": K_I = " << rounded(v.k_I)
+                  << ", K_II = " << rounded(v.k_II) << ", G = " << v.g
+                  << ", G_Irwin = " << v.g_irwin << std::endl
+                  << "    displacement jumps: K_I = " << rounded(jump_k[i][0])
+                  << ", K_II = " << rounded(jump_k[i][1]) << std::defaultfloat
+                  << std::endl;
+            if (!v.crown_clear)
+              pcout << "  Warning: the crown of tip " << i + 1
+                    << " (r_sup = " << v.r_sup
+                    << ") reaches the boundary or another tip; "
+                    << "its K and G are unreliable. Use smaller Fracture "
+                       "parameters/Crown radii or a finer mesh there."
+                    << std::endl;
+            const std::string suffix = "_" + std::to_string(i + 1);
+            statistics.add_value("K_I" + suffix, v.k_I);
+            statistics.add_value("K_II" + suffix, v.k_II);
+            statistics.add_value("G" + suffix, v.g);
+            statistics.add_value("K_I_jump" + suffix, jump_k[i][0]);
+            statistics.add_value("K_II_jump" + suffix, jump_k[i][1]);
+            if (reference)
+              {
+                Vector<double> k(2);
+                reference->vector_value(v.point.position, k);
+                // Relative to the K itself, or to |K| for a K that vanishes.
+                const double norm     = std::hypot(k[0], k[1]);
+                const auto   relative = [&](const double computed,
+                                          const double exact) {
+                  return std::abs(computed - exact) /
+                         (std::abs(exact) > 1e-12 * norm ? std::abs(exact) :
+                                                             norm);
+                };
+                error_I  = std::max(error_I, relative(v.k_I, k[0]));
+                error_II = std::max(error_II, relative(v.k_II, k[1]));
+              }
+          }
+        if (reference)
+          {
+            statistics.add_value("K_I_error", error_I);
+            statistics.add_value("K_II_error", error_II);
+            pcout
+              << "  K errors against the reference (max over the tips): K_I "
+              << std::scientific << std::setprecision(3) << error_I << ", K_II "
+              << error_II << std::defaultfloat << std::endl;
+          }
+        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+          {
+            std::ofstream csv(run_parameters.output_directory + "/front_" +
+                              Utilities::int_to_string(cycle, 3) + ".csv");
+            csv << "index,s,x,y,z,K_I,K_II,K_III,G,G_Irwin,r_inf,r_sup,"
+                   "K_I_jump,K_II_jump\n"
+                << std::setprecision(10);
+            for (unsigned int i = 0; i < values.size(); ++i)
+              {
+                const auto &v = values[i];
+                csv << i << ',' << v.point.s << ',' << v.point.position[0]
+                    << ',' << v.point.position[1] << ",0," << v.k_I << ','
+                    << v.k_II << ",0," << v.g << ',' << v.g_irwin << ','
+                    << v.r_inf << ',' << v.r_sup << ',' << jump_k[i][0] << ','
+                    << jump_k[i][1] << '\n';
+              }
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
   ElasticityProblem<dim>::run()
   {
     // All input was checked in the constructor: from here on results are
@@ -835,6 +995,8 @@ namespace xcrack
         pcout << std::endl;
         if (enrichment)
           report_crack_surface();
+        if (enrichment && fracture_parameters.compute)
+          compute_fracture_parameters(cycle);
 
         if (run_parameters.write_vtu)
           output_results(cycle);
@@ -843,8 +1005,13 @@ namespace xcrack
         // the run, so take differences.
         const auto times =
           timer->get_summary_data(TimerOutput::OutputData::total_wall_time);
-        for (const std::string phase :
-             {"setup", "assemble", "solve", "errors", "output", "refine"})
+        for (const std::string phase : {"setup",
+                                        "assemble",
+                                        "solve",
+                                        "errors",
+                                        "fracture",
+                                        "output",
+                                        "refine"})
           {
             const double total = (times.count(phase) ? times.at(phase) : 0.);
             statistics.add_value("t_" + phase, total - previous_times[phase]);

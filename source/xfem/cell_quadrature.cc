@@ -348,6 +348,50 @@ namespace xcrack
       std::vector<Point<dim>> tips;
       if (front_in_cell && dim == 2)
         tips = front_points<dim>(lsn, lst);
+      if (tips.size() == 1)
+        {
+          // The lip from the tip T to where it leaves the cell, E: the
+          // segment T + u^2 (E - T), Gauss points in u. The grading makes
+          // the r^(-1/2) of the jumps of the auxiliary fields' gradients and
+          // the sqrt(r) of the branch functions' jumps smooth in u.
+          Point<dim> exit;
+          double     exit_lst = 0;
+          for (unsigned int l = 0; l < GeometryInfo<dim>::lines_per_cell; ++l)
+            {
+              const unsigned int a =
+                GeometryInfo<dim>::line_to_cell_vertices(l, 0);
+              const unsigned int b =
+                GeometryInfo<dim>::line_to_cell_vertices(l, 1);
+              if (lsn[a] * lsn[b] > 0 || lsn[a] == lsn[b])
+                continue;
+              const Point<dim> x = GeometryInfo<dim>::unit_cell_vertex(a) +
+                                   lsn[a] / (lsn[a] - lsn[b]) *
+                                     (GeometryInfo<dim>::unit_cell_vertex(b) -
+                                      GeometryInfo<dim>::unit_cell_vertex(a));
+              const double t = tangent.value(x);
+              if (t < exit_lst)
+                {
+                  exit     = x;
+                  exit_lst = t;
+                }
+            }
+          if (exit_lst < 0)
+            {
+              NonMatching::ImmersedSurfaceQuadrature<dim> rule;
+              const QGauss<1>                             gauss(n_points_1d);
+              const Tensor<1, dim> chord = exit - tips[0];
+              for (unsigned int q = 0; q < gauss.size(); ++q)
+                {
+                  const double     u = gauss.point(q)[0];
+                  const Point<dim> x = tips[0] + u * u * chord;
+                  Tensor<1, dim>   n = level_set.gradient(x);
+                  rule.push_back(x,
+                                 2 * u * chord.norm() * gauss.weight(q),
+                                 n / n.norm());
+                }
+              return rule;
+            }
+        }
       if (!front_in_cell)
         boxes.push_back(cell);
       else if (tips.size() == 1)
