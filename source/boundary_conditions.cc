@@ -4,6 +4,7 @@
 #include <xcrack/input_error.h>
 
 #include <set>
+#include <sstream>
 
 namespace xcrack
 {
@@ -40,6 +41,14 @@ namespace xcrack
                         "Pressure on both lips of every crack (positive "
                         "pushes them apart), an expression of x, y[, z]; "
                         "empty for traction-free lips.");
+      prm.declare_entry("Pinned points",
+                        "",
+                        Patterns::Anything(),
+                        "Mesh vertices whose listed displacement components "
+                        "are held at zero, to remove the rigid-body motions "
+                        "when the loads are self-balanced tractions: items "
+                        "'x, y[, z]: letters' separated by '|', e.g. "
+                        "'0.5, -2: xy | 0.5, 2: x'.");
     }
     prm.leave_subsection();
   }
@@ -96,6 +105,7 @@ namespace xcrack
     const std::string neumann_text    = prm.get("Neumann");
     const std::string body_force_text = prm.get("Body force");
     const std::string pressure_text   = prm.get("Lip pressure");
+    const std::string pinned_text     = prm.get("Pinned points");
     prm.leave_subsection();
 
     const std::string section = "Boundary conditions/";
@@ -175,6 +185,32 @@ namespace xcrack
     if (!Utilities::trim(body_force_text).empty())
       body_force = std::make_unique<ParsedVectorFunction<dim>>(
         body_force_text, dim, constants, section + "Body force");
+    pinned.clear();
+    for (const std::string &item : split_and_trim(pinned_text, '|'))
+      {
+        const auto colon = item.find(':');
+        check_input(colon != std::string::npos,
+                    section + "Pinned points: item '" + item +
+                      "' is not of the form 'x, y[, z]: letters'.");
+        const Point<dim> p(
+          parse_vector<dim>(item.substr(0, colon), section + "Pinned points"));
+        ComponentMask     mask(dim, false);
+        const std::string letters = Utilities::trim(item.substr(colon + 1));
+        for (const char c : letters)
+          {
+            const auto d = std::string("xyz").find(c);
+            check_input(d != std::string::npos && d < dim,
+                        section + "Pinned points: item '" + item +
+                          "': components are letters among " +
+                          std::string("xyz").substr(0, dim) + ".");
+            mask.set(d, true);
+          }
+        check_input(mask.n_selected_components() > 0,
+                    section + "Pinned points: item '" + item +
+                      "' names no component.");
+        pinned.emplace_back(p, mask);
+      }
+
     lip_pressure.reset();
     if (!Utilities::trim(pressure_text).empty())
       lip_pressure = std::make_unique<ParsedVectorFunction<dim>>(
@@ -214,6 +250,22 @@ namespace xcrack
     };
     check(dirichlet, "Dirichlet");
     check(neumann, "Neumann");
+
+    // A pinned point must be a vertex of the mesh (on some rank).
+    for (const auto &[p, mask] : pinned)
+      {
+        bool found = false;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (!cell->is_artificial())
+            for (const unsigned int v : cell->vertex_indices())
+              found =
+                found || cell->vertex(v).distance(p) < 1e-10 * cell->diameter();
+        std::ostringstream where;
+        where << p;
+        check_input(Utilities::MPI::logical_or(found, comm),
+                    "Boundary conditions/Pinned points: (" + where.str() +
+                      ") is not a vertex of the mesh.");
+      }
   }
 
 

@@ -199,6 +199,23 @@ main(int argc, char **argv)
   check("enrichment radius with topological enrichment",
         valid_3d + "subsection Enrichment\n  set Enrichment radius = 0.2\n"
                    "end\n");
+  check("pinned point that is not a vertex",
+        valid + "subsection Boundary conditions\n"
+                "  set Pinned points = 0.3, 0.33: xy\nend\n");
+  check("pinned point with an unknown component",
+        valid + "subsection Boundary conditions\n"
+                "  set Pinned points = 0, 0: xq\nend\n");
+  check("lip pressure without a crack",
+        valid + "subsection Boundary conditions\n"
+                "  set Lip pressure = 1\nend\n");
+  check("reference K with three values in 2D",
+        valid + "subsection Fracture parameters\n"
+                "  set Reference K = 1; 0; 0\nend\n");
+  check("crown radii in the wrong order",
+        valid + "subsection Fracture parameters\n"
+                "  set Crown radii = 4, 2\nend\n");
+  check("crack mesh file that does not exist",
+        with_crack("    set Shape = mesh\n    set File name = nowhere.msh"));
   check("output directory is a file",
         changed("Output directory = results", "Output directory = a_file"));
 }

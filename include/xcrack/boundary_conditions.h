@@ -11,6 +11,8 @@
 
 #include <map>
 #include <memory>
+#include <utility>
+#include <vector>
 
 namespace xcrack
 {
@@ -19,8 +21,9 @@ namespace xcrack
   /**
    * Loads and supports of the elasticity problem (`subsection Boundary
    * conditions`): prescribed displacements and tractions per boundary id,
-   * a body force, and a pressure on the crack lips. Each boundary entry is a
-   * list of `id: expr_x; expr_y[; expr_z]` items separated by `|`, e.g.
+   * a body force, a pressure on the crack lips, and pinned vertices. Each
+   * boundary entry is a list of `id: expr_x; expr_y[; expr_z]` items separated
+   * by `|`, e.g.
    *
    *     set Dirichlet = 0: 0; 0 | 1: 0.01*y; 0
    *     set Dirichlet components = 1: x
@@ -62,6 +65,8 @@ namespace xcrack
     std::unique_ptr<Function<dim>>                               body_force;
     /// Pressure on the crack lips (null: traction-free lips).
     std::unique_ptr<Function<dim>> lip_pressure;
+    /// Vertices with components held at zero.
+    std::vector<std::pair<Point<dim>, ComponentMask>> pinned;
   };
 } // namespace xcrack
 

@@ -54,9 +54,10 @@ namespace xcrack
   {
     const std::string section = "Fracture parameters/";
     prm.enter_subsection("Fracture parameters");
-    compute = prm.get_bool("Compute");
+    compute                              = prm.get_bool("Compute");
+    const std::string         radii_text = prm.get("Crown radii");
     const std::vector<double> radii =
-      parse_numbers(prm.get("Crown radii"), 2, section + "Crown radii");
+      parse_numbers(radii_text, 2, section + "Crown radii");
     crown_in_cells              = (prm.get("Crown unit") == "cells");
     const std::string reference = prm.get("Reference K");
     prm.leave_subsection();
@@ -64,8 +65,7 @@ namespace xcrack
     crown_inner = radii[0];
     crown_outer = radii[1];
     check_input(crown_inner > 0 && crown_outer > crown_inner,
-                section + "Crown radii = " + std::to_string(crown_inner) +
-                  ", " + std::to_string(crown_outer) +
+                section + "Crown radii = " + radii_text +
                   ": need 0 < r_inf < r_sup.");
     reference_2d.reset();
     reference_3d.reset();

@@ -46,7 +46,7 @@ expect_error both_kinds_on_one_boundary "boundary id 0 has both a full displacem
   < <(sed 's/set Neumann   = 1: 1; 0/set Neumann = 0: 1; 0/' valid.prm)
 expect_error unknown_boundary "Neumann: boundary id 9 does not exist on the mesh" \
   < <(sed 's/set Neumann   = 1: 1; 0/set Neumann = 9: 1; 0/' valid.prm)
-expect_error no_support "Dirichlet is empty" < <(printf 'set Dimension = 2\n')
+expect_error no_support "Pinned points are empty" < <(printf 'set Dimension = 2\n')
 "$xcrack" does_not_exist.prm > nofile.log 2>&1
 [ $? -eq 1 ] && grep -q "Cannot open the parameter file 'does_not_exist.prm'" nofile.log ||
   fail "missing parameter file"
