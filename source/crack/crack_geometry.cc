@@ -6,6 +6,75 @@
 
 namespace xcrack
 {
+  std::vector<std::vector<unsigned int>>
+  chain_edges(const unsigned int                                        n_nodes,
+              const std::vector<std::pair<unsigned int, unsigned int>> &edges)
+  {
+    std::vector<std::vector<unsigned int>> neighbours(n_nodes);
+    for (const auto &[a, b] : edges)
+      {
+        neighbours[a].push_back(b);
+        neighbours[b].push_back(a);
+      }
+    std::vector<bool> visited(n_nodes, false);
+    const auto        walk = [&](const unsigned int start) {
+      std::vector<unsigned int> chain{start};
+      visited[start] = true;
+      for (bool extended = true; extended;)
+        {
+          extended = false;
+          for (const unsigned int next : neighbours[chain.back()])
+            if (!visited[next])
+              {
+                visited[next] = true;
+                chain.push_back(next);
+                extended = true;
+                break;
+              }
+        }
+      if (chain.size() > 2 && std::count(neighbours[chain.back()].begin(),
+                                         neighbours[chain.back()].end(),
+                                         start) > 0)
+        chain.push_back(start);
+      return chain;
+    };
+    std::vector<std::vector<unsigned int>> chains;
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      if (!visited[k] && neighbours[k].size() == 1)
+        chains.push_back(walk(k));
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      if (!visited[k] && !neighbours[k].empty())
+        chains.push_back(walk(k));
+    return chains;
+  }
+
+
+
+  template <int dim>
+  void
+  orient_front(std::vector<FrontPoint<dim>> &front)
+  {
+    if constexpr (dim == 3)
+      {
+        double along = 0;
+        for (unsigned int k = 0; k + 1 < front.size(); ++k)
+          along += (front[k + 1].position - front[k].position) * front[k].e3;
+        if (along < 0)
+          std::reverse(front.begin(), front.end());
+      }
+    for (unsigned int k = 0; k < front.size(); ++k)
+      front[k].s =
+        (k == 0 ?
+           0. :
+           front[k - 1].s + front[k].position.distance(front[k - 1].position));
+  }
+
+  template void
+  orient_front<2>(std::vector<FrontPoint<2>> &);
+  template void
+  orient_front<3>(std::vector<FrontPoint<3>> &);
+
+
   namespace
   {
     /// The intersection of two boxes (may be empty: lower > upper).
@@ -172,18 +241,6 @@ namespace xcrack
 
 
 
-  void
-  PlanarCrack::set_abscissae(std::vector<FrontPoint<3>> &points)
-  {
-    for (unsigned int i = 0; i < points.size(); ++i)
-      points[i].s =
-        (i == 0 ? 0. :
-                  points[i - 1].s +
-                    (points[i].position - points[i - 1].position).norm());
-  }
-
-
-
   HalfPlaneCrack::HalfPlaneCrack(const Point<3>     &point_on_front,
                                  const Tensor<1, 3> &normal,
                                  const Tensor<1, 3> &propagation)
@@ -231,7 +288,7 @@ namespace xcrack
                            t_min + (t_max - t_min) * i / (n_points - 1));
         points.push_back(frame(0, t, 1, 0));
       }
-    set_abscissae(points);
+    orient_front(points);
     return points;
   }
 
@@ -367,7 +424,7 @@ namespace xcrack
         if (inside(body, point.position))
           points.push_back(point);
       }
-    set_abscissae(points);
+    orient_front(points);
     return points;
   }
 
@@ -435,7 +492,7 @@ namespace xcrack
         if (inside(body, point.position))
           points.push_back(point);
       }
-    set_abscissae(points);
+    orient_front(points);
     return points;
   }
 

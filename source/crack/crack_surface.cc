@@ -394,64 +394,12 @@ namespace xcrack
       if (node_of[a] != node_of[b])
         edges.emplace(std::min(node_of[a], node_of[b]),
                       std::max(node_of[a], node_of[b]));
-    std::vector<std::vector<unsigned int>> neighbours(n_nodes);
-    for (const auto &[a, b] : edges)
+    for (const auto &chain : chain_edges(n_nodes, {edges.begin(), edges.end()}))
       {
-        neighbours[a].push_back(b);
-        neighbours[b].push_back(a);
-      }
-    std::vector<bool> visited(n_nodes, false);
-    const auto        walk = [&](const unsigned int start) {
-      std::vector<unsigned int> chain{start};
-      visited[start] = true;
-      for (bool extended = true; extended;)
-        {
-          extended = false;
-          for (const unsigned int next : neighbours[chain.back()])
-            if (!visited[next])
-              {
-                visited[next] = true;
-                chain.push_back(next);
-                extended = true;
-                break;
-              }
-        }
-      // A closed front returns to its start.
-      if (chain.size() > 2 &&
-          std::find(neighbours[chain.back()].begin(),
-                    neighbours[chain.back()].end(),
-                    start) != neighbours[chain.back()].end())
-        chain.push_back(start);
-      return chain;
-    };
-    std::vector<std::vector<unsigned int>> chains;
-    // Open fronts first, from an end; then the closed ones.
-    for (unsigned int k = 0; k < n_nodes; ++k)
-      if (!visited[k] && neighbours[k].size() == 1)
-        chains.push_back(walk(k));
-    for (unsigned int k = 0; k < n_nodes; ++k)
-      if (!visited[k] && !neighbours[k].empty())
-        chains.push_back(walk(k));
-
-    for (auto &chain : chains)
-      {
-        // Orient along e3.
-        double along = 0;
-        for (unsigned int k = 0; k + 1 < chain.size(); ++k)
-          along += (nodes[chain[k + 1]].position - nodes[chain[k]].position) *
-                   nodes[chain[k]].e3;
-        if (along < 0)
-          std::reverse(chain.begin(), chain.end());
         std::vector<FrontPoint<dim>> front;
         for (const unsigned int k : chain)
-          {
-            FrontPoint<dim> p = nodes[k];
-            p.s =
-              (front.empty() ?
-                 0. :
-                 front.back().s + front.back().position.distance(p.position));
-            front.push_back(p);
-          }
+          front.push_back(nodes[k]);
+        orient_front(front);
         front_chains.push_back(std::move(front));
       }
   }

@@ -866,55 +866,15 @@ namespace xcrack
       }
 
     // Chain the front edges through their shared vertices.
-    std::map<unsigned int, std::vector<unsigned int>> neighbours;
+    std::vector<std::pair<unsigned int, unsigned int>> front_edges;
     for (const unsigned int b : front_elements)
-      {
-        const auto &edge = edges[boundary[b]];
-        neighbours[edge[0]].push_back(edge[1]);
-        neighbours[edge[1]].push_back(edge[0]);
-      }
-    std::map<unsigned int, bool> visited;
-    const auto                   walk = [&](const unsigned int start) {
-      std::vector<unsigned int> chain{start};
-      visited[start] = true;
-      for (bool extended = true; extended;)
-        {
-          extended = false;
-          for (const unsigned int next : neighbours[chain.back()])
-            if (!visited[next])
-              {
-                visited[next] = true;
-                chain.push_back(next);
-                extended = true;
-                break;
-              }
-        }
-      if (chain.size() > 2 && std::count(neighbours[chain.back()].begin(),
-                                         neighbours[chain.back()].end(),
-                                         start) > 0)
-        chain.push_back(start);
-      return chain;
-    };
-    std::vector<std::vector<unsigned int>> chains;
-    for (const auto &[v, n] : neighbours)
-      if (!visited[v] && n.size() == 1)
-        chains.push_back(walk(v));
-    for (const auto &[v, n] : neighbours)
-      if (!visited[v])
-        chains.push_back(walk(v));
-    for (auto &chain : chains)
+      front_edges.emplace_back(edges[boundary[b]][0], edges[boundary[b]][1]);
+    for (const auto &chain : chain_edges(vertices.size(), front_edges))
       {
         std::vector<FrontPoint<dim>> front;
         for (const unsigned int v : chain)
           front.push_back(make_point(v));
-        double along = 0;
-        for (unsigned int k = 0; k + 1 < front.size(); ++k)
-          along += (front[k + 1].position - front[k].position) * front[k].e3;
-        if (along < 0)
-          std::reverse(front.begin(), front.end());
-        for (unsigned int k = 1; k < front.size(); ++k)
-          front[k].s =
-            front[k - 1].s + front[k].position.distance(front[k - 1].position);
+        orient_front(front);
         points.insert(points.end(), front.begin(), front.end());
       }
     return points;

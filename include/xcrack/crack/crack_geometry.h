@@ -8,6 +8,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace xcrack
@@ -33,6 +34,27 @@ namespace xcrack
     Tensor<1, dim> e2;
     Tensor<1, dim> e3;
   };
+
+  /**
+   * Join the edges (pairs of node indices among @p n_nodes) into chains of
+   * nodes: the open ones from an end first, then the closed ones, whose
+   * last node repeats the first. Each edge is used once; at a node with
+   * more than two edges the walk takes the first unused one.
+   */
+  std::vector<std::vector<unsigned int>>
+  chain_edges(const unsigned int                                        n_nodes,
+              const std::vector<std::pair<unsigned int, unsigned int>> &edges);
+
+  /**
+   * Orient an ordered 3D front along its tangent e3 = e1 x e2 (reverse it
+   * if it runs the other way on the whole) and fill the abscissae s from
+   * 0; in 2D only the abscissae.
+   */
+  template <int dim>
+  void
+  orient_front(std::vector<FrontPoint<dim>> &front);
+
+
 
   /**
    * Where a crack is, as a pair of signed distance functions (level sets):
@@ -164,10 +186,6 @@ namespace xcrack
           const double y,
           const double nx,
           const double ny) const;
-
-    /// Fill the abscissae of ordered front points.
-    static void
-    set_abscissae(std::vector<FrontPoint<3>> &points);
 
     Point<3>     center;
     Tensor<1, 3> normal, u, v;
