@@ -444,8 +444,7 @@ namespace xcrack
                     }
               }
 
-          if (boundary_conditions.lip_pressure &&
-              (enrichment->is_split(cell) || enrichment->is_tip(cell)))
+          if (boundary_conditions.lip_pressure)
             add_lip_pressure(cell, cell_rhs);
 
           local_dof_indices.resize(n_dofs);
