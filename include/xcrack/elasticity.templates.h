@@ -500,36 +500,27 @@ namespace xcrack
     const auto rule = lip_rule(cell);
     if (rule.size() == 0)
       return;
-    const double            offset = 1e-8;
-    std::vector<Point<dim>> plus, minus;
-    for (unsigned int q = 0; q < rule.size(); ++q)
-      {
-        plus.push_back(rule.point(q) + offset * rule.normal_vector(q));
-        minus.push_back(rule.point(q) - offset * rule.normal_vector(q));
-      }
     const FiniteElement<dim> &fe = cell->get_fe();
-    FEValues<dim>             plus_values(fe,
-                              Quadrature<dim>(plus),
-                              update_values | update_quadrature_points |
-                                update_jacobians);
-    FEValues<dim> minus_values(fe, Quadrature<dim>(minus), update_values);
-    plus_values.reinit(cell);
-    minus_values.reinit(cell);
+    FEValues<dim>             sides(
+      fe,
+      Quadrature<dim>(CellQuadrature::both_sides(rule.get_points(),
+                                                 rule.get_normal_vectors())),
+      update_values | update_quadrature_points | update_jacobians);
+    sides.reinit(cell);
     for (unsigned int q = 0; q < rule.size(); ++q)
       {
-        // Nanson: n ds = det(J) J^-T N dS, with N and dS of the reference
-        // rule.
-        const Tensor<2, dim> J    = plus_values.jacobian(q);
-        const Tensor<1, dim> n_ds = determinant(J) * transpose(invert(J)) *
-                                    rule.normal_vector(q) * rule.weight(q);
+        const Tensor<1, dim> n_ds =
+          CellQuadrature::mapped_normal<dim>(sides.jacobian(2 * q),
+                                             rule.normal_vector(q),
+                                             rule.weight(q));
         const double p = boundary_conditions.lip_pressure->value(
-          plus_values.quadrature_point(q));
+          sides.quadrature_point(2 * q));
         for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
           {
             const unsigned int c = fe.system_to_component_index(i).first;
             cell_rhs(i) +=
               p * n_ds[c] *
-              (plus_values.shape_value(i, q) - minus_values.shape_value(i, q));
+              (sides.shape_value(i, 2 * q) - sides.shape_value(i, 2 * q + 1));
           }
       }
   }

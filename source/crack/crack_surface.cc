@@ -455,14 +455,10 @@ namespace xcrack
           piece.level,
           piece.index,
           &dof_handler);
-        std::vector<Point<dim>> points;
-        for (unsigned int k = 0; k < piece.reference.size(); ++k)
-          {
-            points.push_back(piece.reference[k] +
-                             offset * piece.reference_normal[k]);
-            points.push_back(piece.reference[k] -
-                             offset * piece.reference_normal[k]);
-          }
+        const std::vector<Point<dim>> points =
+          CellQuadrature::both_sides(piece.reference,
+                                     piece.reference_normal,
+                                     offset);
         FEValues<dim> fe_values(mapping,
                                 cell->get_fe(),
                                 Quadrature<dim>(points),
@@ -537,8 +533,8 @@ namespace xcrack
           for (unsigned int k = 0; k < n; ++k, i += 6)
             {
               cell.push_back(points.size());
-              points.push_back({rank[i], rank[i + 1], rank[i + 2]});
-              opening.push_back({rank[i + 3], rank[i + 4], rank[i + 5]});
+              points.push_back({{rank[i], rank[i + 1], rank[i + 2]}});
+              opening.push_back({{rank[i + 3], rank[i + 4], rank[i + 5]}});
               abscissa.push_back(0);
             }
           cells.push_back(cell);
@@ -551,10 +547,10 @@ namespace xcrack
         for (const auto &p : front)
           {
             cell.push_back(points.size());
-            points.push_back({p.position[0],
-                              p.position[1],
-                              dim == 3 ? p.position[dim - 1] : 0.});
-            opening.push_back({0., 0., 0.});
+            points.push_back({{p.position[0],
+                               p.position[1],
+                               dim == 3 ? p.position[dim - 1] : 0.}});
+            opening.push_back({{0., 0., 0.}});
             abscissa.push_back(p.s);
           }
         cells.push_back(cell);

@@ -425,7 +425,7 @@ namespace xcrack
         // Triangles; polygons of more corners are split into a fan.
         for (const auto &polygon : raw.polygons)
           for (unsigned int k = 1; k + 1 < polygon.size(); ++k)
-            facets.push_back({polygon[0], polygon[k], polygon[k + 1]});
+            facets.push_back({{polygon[0], polygon[k], polygon[k + 1]}});
         check_input(!facets.empty(),
                     what + ": no triangles or quadrilaterals in this file; a "
                            "3D crack is a surface mesh.");
@@ -434,7 +434,7 @@ namespace xcrack
       {
         for (const auto &line : raw.lines)
           for (unsigned int k = 0; k + 1 < line.size(); ++k)
-            facets.push_back({line[k], line[k + 1], 0});
+            facets.push_back({{line[k], line[k + 1], 0}});
         check_input(!facets.empty(),
                     what + ": no line segments in this file; a 2D crack is "
                            "a polyline.");
@@ -456,10 +456,10 @@ namespace xcrack
         {
           std::array<unsigned int, 2> key;
           if (dim == 3)
-            key = {std::min(facets[f][k], facets[f][(k + 1) % 3]),
-                   std::max(facets[f][k], facets[f][(k + 1) % 3])};
+            key = {{std::min(facets[f][k], facets[f][(k + 1) % 3]),
+                    std::max(facets[f][k], facets[f][(k + 1) % 3])}};
           else
-            key = {facets[f][k], facets[f][k]};
+            key = {{facets[f][k], facets[f][k]}};
           const auto [it, inserted] = edge_index.emplace(key, edges.size());
           if (inserted)
             {

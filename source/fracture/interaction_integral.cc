@@ -8,6 +8,7 @@
 #include <xcrack/fracture/interaction_integral.h>
 #include <xcrack/fracture/williams.h>
 #include <xcrack/input_error.h>
+#include <xcrack/xfem/cell_quadrature.h>
 
 #include <cmath>
 #include <limits>
@@ -260,13 +261,8 @@ namespace xcrack
             lips_of(cell, points, weights, normals);
             if (points.empty())
               continue;
-            const double            offset = 1e-8;
-            std::vector<Point<dim>> sides;
-            for (unsigned int k = 0; k < points.size(); ++k)
-              {
-                sides.push_back(points[k] + offset * normals[k]);
-                sides.push_back(points[k] - offset * normals[k]);
-              }
+            const std::vector<Point<dim>> sides =
+              CellQuadrature::both_sides(points, normals);
             FEValues<dim> side_values(mapping,
                                       cell->get_fe(),
                                       Quadrature<dim>(sides),
@@ -277,11 +273,10 @@ namespace xcrack
             side_values[displacement].get_function_gradients(solution, grad_u);
             for (unsigned int k = 0; k < points.size(); ++k)
               {
-                const Tensor<2, dim> J = side_values.jacobian(2 * k);
-                // n ds (Nanson), to the lsn > 0 lip, in the tip frame.
+                // n ds, to the lsn > 0 lip, in the tip frame.
                 const Tensor<1, dim> n_ds =
-                  R * (determinant(J) * transpose(invert(J)) * normals[k]) *
-                  weights[k];
+                  R * CellQuadrature::mapped_normal<dim>(
+                        side_values.jacobian(2 * k), normals[k], weights[k]);
                 const Point<dim> x_global = side_values.quadrature_point(2 * k);
                 const double     p        = lip_pressure->value(x_global);
                 const double     q        = q_at(points[k]);

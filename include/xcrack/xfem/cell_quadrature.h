@@ -3,6 +3,7 @@
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/quadrature.h>
+#include <deal.II/base/tensor.h>
 
 #include <deal.II/non_matching/immersed_surface_quadrature.h>
 
@@ -51,6 +52,42 @@ namespace xcrack
              const std::vector<double> &lst,
              const unsigned int         n_points_1d,
              const unsigned int         subdivisions);
+
+    /**
+     * Where the jumps across the lips are read: for each lip point (reference
+     * coordinates) with unit reference normal, the point @p offset along
+     * the normal (the lsn > 0 side) and the point @p offset against it,
+     * interleaved. The enrichment functions take their one-sided values
+     * there while the polynomials have not moved.
+     */
+    template <int dim>
+    std::vector<Point<dim>>
+    both_sides(const std::vector<Point<dim>>     &points,
+               const std::vector<Tensor<1, dim>> &normals,
+               const double                       offset = 1e-8)
+    {
+      std::vector<Point<dim>> sides;
+      for (unsigned int k = 0; k < points.size(); ++k)
+        {
+          sides.push_back(points[k] + offset * normals[k]);
+          sides.push_back(points[k] - offset * normals[k]);
+        }
+      return sides;
+    }
+
+    /**
+     * Nanson's formula: the real vector n ds of a surface element whose
+     * reference unit normal is @p normal and reference measure @p weight,
+     * mapped with Jacobian @p J: det(J) J^-T normal weight.
+     */
+    template <int dim>
+    Tensor<1, dim>
+    mapped_normal(const Tensor<2, dim> &J,
+                  const Tensor<1, dim> &normal,
+                  const double          weight)
+    {
+      return determinant(J) * (transpose(invert(J)) * normal) * weight;
+    }
 
     /**
      * The points where the crack front {lsn = 0, lst = 0} meets the closed
