@@ -22,7 +22,7 @@ namespace xcrack
                         "of them.");
       prm.declare_entry("Strategy",
                         "global",
-                        Patterns::Selection("global|kelly|region"),
+                        Patterns::Selection("global|kelly|region|front"),
                         "How the mesh is refined between cycles.");
       prm.declare_entry("Refine fraction",
                         "0.3",
@@ -37,6 +37,12 @@ namespace xcrack
                         Patterns::Anything(),
                         "Region: expression of x, y, z, positive in the "
                         "region to refine, e.g. 0.1 - sqrt(x^2 + y^2).");
+      prm.declare_entry("Front band",
+                        "2",
+                        Patterns::Double(0),
+                        "Front: refine the cells whose centre lies within "
+                        "this many of their own diameters of a crack front "
+                        "(r = sqrt(lsn^2 + lst^2)).");
       prm.declare_entry("Maximum level",
                         "12",
                         Patterns::Integer(0, 30),
@@ -62,6 +68,7 @@ namespace xcrack
       coarsen_fraction = prm.get_double("Coarsen fraction");
       region_text      = prm.get("Region");
       max_level        = prm.get_integer("Maximum level");
+      front_band       = prm.get_double("Front band");
     }
     prm.leave_subsection();
 
@@ -80,9 +87,10 @@ namespace xcrack
   template <int dim>
   void
   Refinement<dim>::refine(
-    parallel::distributed::Triangulation<dim> &triangulation,
-    const DoFHandler<dim>                     &dof_handler,
-    const TrilinosWrappers::MPI::Vector       &solution) const
+    parallel::distributed::Triangulation<dim>       &triangulation,
+    const DoFHandler<dim>                           &dof_handler,
+    const TrilinosWrappers::MPI::Vector             &solution,
+    const std::function<double(const Point<dim> &)> &front_distance) const
   {
     if (strategy == "global")
       {
@@ -112,6 +120,14 @@ namespace xcrack
           triangulation.locally_owned_subdomain());
         parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
           triangulation, indicators, refine_fraction, coarsen_fraction);
+      }
+    else if (strategy == "front")
+      {
+        AssertThrow(front_distance, ExcInternalError());
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              front_distance(cell->center()) < front_band * cell->diameter())
+            cell->set_refine_flag();
       }
     else
       {

@@ -10,6 +10,8 @@
 #include <xcrack/input_error.h>
 #include <xcrack/xfem/cell_quadrature.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -24,8 +26,8 @@ namespace xcrack
                         "true",
                         Patterns::Bool(),
                         "Extract K_I, K_II (, K_III) and G at the crack "
-                        "tips after each solve (2D; 3D fronts are not "
-                        "implemented yet) and write front_<cycle>.csv.");
+                        "tips or along the fronts after each solve and "
+                        "write front_<cycle>.csv.");
       prm.declare_entry("Crown radii",
                         "2, 4",
                         Patterns::Anything(),
@@ -43,6 +45,26 @@ namespace xcrack
                         "or 'K_I; K_II; K_III' (3D) as expressions of x, y[, "
                         "z] of the front point; the run prints the error "
                         "against them. Empty: none.");
+      prm.declare_entry("Smoothing",
+                        "legendre",
+                        Patterns::Selection(
+                          "legendre|lagrange|lagrange regularized"),
+                        "3D: functions of s on which K(s), G(s) and the "
+                        "virtual extensions are built: Legendre polynomials "
+                        "(their periodic analogue, a Fourier series, on a "
+                        "closed front), hats on the front segments, or "
+                        "hats spanning four segments with K at a node the "
+                        "weighted average over them.");
+      prm.declare_entry("Legendre degree",
+                        "5",
+                        Patterns::Integer(0, 7),
+                        "3D, Smoothing = legendre: highest degree.");
+      prm.declare_entry("Front segments",
+                        "0",
+                        Patterns::Integer(0, 10000),
+                        "3D: number of equal segments of a front (nodes of "
+                        "the Lagrange bases, points where K is reported); "
+                        "0: segments about r_sup long.");
     }
     prm.leave_subsection();
   }
@@ -61,6 +83,9 @@ namespace xcrack
       parse_numbers(radii_text, 2, section + "Crown radii");
     crown_in_cells              = (prm.get("Crown unit") == "cells");
     const std::string reference = prm.get("Reference K");
+    smoothing                   = FrontBasis::parse_type(prm.get("Smoothing"));
+    legendre_degree             = prm.get_integer("Legendre degree");
+    front_segments              = prm.get_integer("Front segments");
     prm.leave_subsection();
 
     crown_inner = radii[0];
@@ -99,42 +124,382 @@ namespace xcrack
 
 
 
+  namespace
+  {
+    /**
+     * A front as a polyline through its points, with a frame that varies
+     * continuously along it: where a point x projects (abscissa s), the
+     * frame there (the auxiliary fields and theta live in it) and the
+     * derivative of that frame along s, which makes the auxiliary fields of
+     * a curved front compatible (see InteractionIntegral).
+     *
+     * The frames of the points are interpolated linearly in s and
+     * re-orthonormalised (e2 first); their derivative is a central
+     * difference over @p step, a length a few cells long: the frames of the
+     * extracted points come from level-set gradients and vary from point to
+     * point by O(h), so the derivative must average over several segments.
+     */
+    template <int dim>
+    class FrontCurve
+    {
+    public:
+      struct Projection
+      {
+        double     s = 0;
+        Point<dim> foot;
+        /// Rows e1, e2 (, e3): global to local components.
+        Tensor<2, dim> R;
+        /// d R / d s (zero in 2D).
+        Tensor<2, dim> dR;
+        /// Open front and x beyond one of its ends.
+        bool at_end = false;
+      };
+
+      FrontCurve(const std::vector<FrontPoint<dim>> &points, const double step)
+        : points(points)
+        , closed(points.size() > 2 &&
+                 points.front().position == points.back().position)
+        , length(points.back().s)
+        , step(std::min(step, 0.25 * points.back().s))
+      {}
+
+      /// Projection of @p x on the segments @p first to @p last - 1 (on
+      /// all by default; a single point in 2D).
+      Projection
+      project(const Point<dim>  &x,
+              const unsigned int first = 0,
+              unsigned int       last  = numbers::invalid_unsigned_int) const
+      {
+        Projection result;
+        if (points.size() == 1)
+          {
+            result.foot = points[0].position;
+            result.R    = frame_at(0);
+            return result;
+          }
+        last                = std::min<unsigned int>(last, points.size() - 1);
+        double       best   = std::numeric_limits<double>::max();
+        unsigned int best_i = first;
+        double       best_t = 0;
+        for (unsigned int i = first; i < last; ++i)
+          {
+            const Tensor<1, dim> ab =
+              points[i + 1].position - points[i].position;
+            const double t =
+              std::clamp(((x - points[i].position) * ab) / (ab * ab), 0., 1.);
+            const double d = (x - (points[i].position + t * ab)).norm_square();
+            if (d < best)
+              {
+                best   = d;
+                best_i = i;
+                best_t = t;
+              }
+          }
+        const FrontPoint<dim> &a = points[best_i];
+        const FrontPoint<dim> &b = points[best_i + 1];
+        result.foot = a.position + best_t * (b.position - a.position);
+        result.s    = a.s + best_t * (b.s - a.s);
+        result.at_end =
+          !closed && ((best_i == 0 && best_t == 0) ||
+                      (best_i + 2 == points.size() && best_t == 1));
+        result.R = frame_at(result.s);
+        if (dim == 3 && step > 0)
+          {
+            double s_minus = result.s - step, s_plus = result.s + step;
+            if (!closed)
+              {
+                s_minus = std::max(s_minus, 0.);
+                s_plus  = std::min(s_plus, length);
+              }
+            result.dR =
+              (frame_at(s_plus) - frame_at(s_minus)) / (s_plus - s_minus);
+          }
+        return result;
+      }
+
+      /// Distance of the segments @p i to @p x.
+      double
+      segment_distance(const unsigned int i, const Point<dim> &x) const
+      {
+        const Tensor<1, dim> ab = points[i + 1].position - points[i].position;
+        const double         t =
+          std::clamp(((x - points[i].position) * ab) / (ab * ab), 0., 1.);
+        return (x - (points[i].position + t * ab)).norm();
+      }
+
+      /// The front point (position and frame) at abscissa @p s.
+      FrontPoint<dim>
+      at(const double s) const
+      {
+        if (points.size() == 1)
+          return points[0];
+        const unsigned int     i = segment_of(s);
+        const FrontPoint<dim> &a = points[i];
+        const FrontPoint<dim> &b = points[i + 1];
+        const double           t = std::clamp((s - a.s) / (b.s - a.s), 0., 1.);
+        const Tensor<2, dim>   R = frame_at(s);
+        FrontPoint<dim>        point;
+        point.position = a.position + t * (b.position - a.position);
+        point.s        = s;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            point.e1[d] = R[0][d];
+            point.e2[d] = R[1][d];
+            if constexpr (dim == 3)
+              point.e3[d] = R[2][d];
+          }
+        return point;
+      }
+
+      const std::vector<FrontPoint<dim>> &points;
+      const bool                          closed;
+      const double                        length;
+
+    private:
+      /// The segment holding abscissa @p s (in [0, length]).
+      unsigned int
+      segment_of(const double s) const
+      {
+        const auto it =
+          std::upper_bound(points.begin(),
+                           points.end(),
+                           s,
+                           [](const double value, const FrontPoint<dim> &p) {
+                             return value < p.s;
+                           });
+        const unsigned int i =
+          (it == points.begin() ? 0 : it - points.begin() - 1);
+        return std::min<unsigned int>(i, points.size() - 2);
+      }
+
+      /// The point of the polyline at abscissa @p s (wrapped on a closed
+      /// front, clamped to the ends of an open one).
+      Point<dim>
+      position_at(double s) const
+      {
+        if (closed)
+          s -= length * std::floor(s / length);
+        s                        = std::clamp(s, 0., length);
+        const unsigned int     i = segment_of(s);
+        const FrontPoint<dim> &a = points[i];
+        const FrontPoint<dim> &b = points[i + 1];
+        const double           t = std::clamp((s - a.s) / (b.s - a.s), 0., 1.);
+        return a.position + t * (b.position - a.position);
+      }
+
+      /**
+       * Rows e1, e2 (, e3) at abscissa @p s. e2 is the normal of the points
+       * interpolated; in 3D e3 is the chord of the polyline from s - step
+       * to s + step (the frames of the extracted points come from Q1
+       * level-set gradients and tilt by O(h) from point to point, the
+       * positions are within O(h^2) of the front: the chord gives a
+       * tangent whose derivative along s is the curvature, not noise).
+       */
+      Tensor<2, dim>
+      frame_at(double s) const
+      {
+        Tensor<1, dim> e1 = points[0].e1, e2 = points[0].e2;
+        if (points.size() > 1)
+          {
+            if (closed)
+              s -= length * std::floor(s / length);
+            const unsigned int     i = segment_of(s);
+            const FrontPoint<dim> &a = points[i];
+            const FrontPoint<dim> &b = points[i + 1];
+            const double t = std::clamp((s - a.s) / (b.s - a.s), 0., 1.);
+            e2             = (1 - t) * a.e2 + t * b.e2;
+            e2 /= e2.norm();
+            if constexpr (dim == 3)
+              {
+                const double   half = std::max(step, 1e-3 * length);
+                Tensor<1, dim> e3 =
+                  position_at(s + half) - position_at(s - half);
+                e3 -= (e3 * e2) * e2;
+                e3 /= e3.norm();
+                e1 = cross_product_3d(e2, e3);
+              }
+          }
+        Tensor<2, dim> R;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            R[0][d] = e1[d];
+            R[1][d] = e2[d];
+          }
+        if constexpr (dim == 3)
+          {
+            const Tensor<1, dim> e3 = cross_product_3d(e1, e2);
+            for (unsigned int d = 0; d < dim; ++d)
+              R[2][d] = e3[d];
+          }
+        return R;
+      }
+
+      const double step;
+    };
+
+
+
+    /// The dim x dim block of a 3 x 3 tensor.
+    template <int dim>
+    Tensor<2, dim>
+    block(const Tensor<2, 3> &t)
+    {
+      Tensor<2, dim> result;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          result[i][j] = t[i][j];
+      return result;
+    }
+
+
+
+    /**
+     * Gradient (global components) of the auxiliary field u = u_a(x1, x2)
+     * e_a(s) at local coordinates @p xl, polar (@p r, @p angle), of the
+     * front frame at the projection: the plane Williams gradient rotated,
+     * plus, along a curved 3D front, the turning of the frame,
+     * u_a de_a/ds (x) grad s with grad s = e3 / (1 + x1 de1/ds . e3 + x2
+     * de2/ds . e3). Without that term the auxiliary strain is not the
+     * strain of any displacement and K along a circle of radius rho is off
+     * by about r_sup / rho (7 % for crowns of 4 cells of 1/16 on the unit
+     * penny).
+     */
+    template <int dim>
+    Tensor<2, dim>
+    aux_gradient(const WilliamsField                        &field,
+                 const typename FrontCurve<dim>::Projection &projection,
+                 const Tensor<1, dim>                       &xl,
+                 const double                                r,
+                 const double                                angle)
+    {
+      const Tensor<2, dim> &R = projection.R;
+      Tensor<2, dim>        gradient =
+        transpose(R) * block<dim>(field.displacement_gradient(r, angle)) * R;
+      if constexpr (dim == 3)
+        {
+          const Tensor<1, 3> u   = field.displacement(r, angle);
+          const Tensor<1, 3> e3  = R[2];
+          const double       h_s = 1 + xl[0] * (projection.dR[0] * e3) +
+                             xl[1] * (projection.dR[1] * e3);
+          for (unsigned int a = 0; a < 3; ++a)
+            gradient += (u[a] / h_s) * outer_product(projection.dR[a], e3);
+        }
+      return gradient;
+    }
+
+
+
+    /**
+     * Divergence of the auxiliary stresses of @p fields (K_I, K_II, K_III
+     * = 1) at @p x, by central differences of C : eps(u^aux) over a step
+     * 1e-4 r. The Williams fields extend smoothly across the lips, so the
+     * angle of a shifted point is taken on the branch of @p angle, that of
+     * x itself.
+     */
+    template <int dim, int n_modes>
+    void
+    aux_stress_divergence(const WilliamsField (&fields)[n_modes],
+                          const FrontCurve<dim> &curve,
+                          const Point<dim>      &x,
+                          const double           angle,
+                          const unsigned int     first,
+                          const unsigned int     last,
+                          Tensor<1, dim> (&divergence)[n_modes])
+    {
+      const auto   base   = curve.project(x, first, last);
+      const double r      = (base.R * (x - base.foot)).norm();
+      const double delta  = 1e-4 * r;
+      const double mu     = fields[0].mu,
+                   lambda = mu * (3 - fields[0].kappa) / (fields[0].kappa - 1);
+      for (unsigned int m = 0; m < n_modes; ++m)
+        divergence[m] = Tensor<1, dim>();
+      for (unsigned int j = 0; j < dim; ++j)
+        for (const double sign : {1., -1.})
+          {
+            Point<dim> y = x;
+            y[j] += sign * delta;
+            const auto           projection = curve.project(y, first, last);
+            const Tensor<1, dim> yl = projection.R * (y - projection.foot);
+            double               a  = std::atan2(yl[1], yl[0]);
+            if (a - angle > numbers::PI)
+              a -= 2 * numbers::PI;
+            else if (a - angle < -numbers::PI)
+              a += 2 * numbers::PI;
+            const double ry = std::hypot(yl[0], yl[1]);
+            for (unsigned int m = 0; m < n_modes; ++m)
+              {
+                const Tensor<2, dim> g =
+                  aux_gradient(fields[m], projection, yl, ry, a);
+                const SymmetricTensor<2, dim> eps = symmetrize(g);
+                // sigma_ij,j: only column j of sigma(y) matters here.
+                for (unsigned int i = 0; i < dim; ++i)
+                  divergence[m][i] +=
+                    sign *
+                    (lambda * trace(eps) * (i == j ? 1. : 0.) +
+                     2 * mu * eps[i][j]) /
+                    (2 * delta);
+              }
+          }
+    }
+  } // namespace
+
+
+
   template <int dim>
   std::vector<FrontValues<dim>>
   InteractionIntegral<dim>::compute(
-    const DoFHandler<dim>               &dof_handler,
-    const TrilinosWrappers::MPI::Vector &solution,
-    const std::vector<FrontPoint<dim>>  &tips,
-    const FEValuesOf                    &fe_values_of,
-    const Function<dim>                 *lip_pressure,
-    const LipsOf                        &lips_of) const
+    const DoFHandler<dim>                           &dof_handler,
+    const TrilinosWrappers::MPI::Vector             &solution,
+    const std::vector<std::vector<FrontPoint<dim>>> &fronts,
+    const FEValuesOf                                &fe_values_of,
+    const Function<dim>                             *lip_pressure,
+    const LipsOf                                    &lips_of) const
   {
-    static_assert(dim == 2, "The interaction integral is 2D for now.");
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
     const double   nu   = material.poisson_ratio;
     const double   e_star =
-      (material.plane_model == Material::PlaneModel::plane_stress ?
+      (dim == 2 && material.plane_model == Material::PlaneModel::plane_stress ?
          material.youngs_modulus :
          material.youngs_modulus / (1 - nu * nu));
-    WilliamsField aux[2];
-    for (auto &field : aux)
+    // Auxiliary fields: unit K_I, K_II (, K_III).
+    constexpr unsigned int n_modes = (dim == 3 ? 3 : 2);
+    // Integrals per test function: I for each mode, then G.
+    constexpr unsigned int n_integrals = n_modes + 1;
+    WilliamsField          aux[n_modes];
+    for (unsigned int m = 0; m < n_modes; ++m)
       {
-        field.mu    = material.mu();
-        field.kappa = material.kappa(dim);
+        aux[m].mu    = material.mu();
+        aux[m].kappa = material.kappa(dim);
       }
     aux[0].k_I  = 1;
     aux[1].k_II = 1;
+    if constexpr (dim == 3)
+      aux[2].k_III = 1;
     const FEValuesExtractors::Vector displacement(0);
     const MappingQ1<dim>             mapping;
-    const FE_Q<dim>                  q1(1);
+    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
 
     std::vector<FrontValues<dim>> result;
-    for (const FrontPoint<dim> &tip : tips)
+    for (unsigned int f = 0; f < fronts.size(); ++f)
       {
-        // The crown radii, in cells of the size of the one holding the tip.
+        const unsigned int n_segments = fronts[f].size() - 1;
+        // Distance to the front (before the crown radii are known).
+        const FrontCurve<dim> polyline(fronts[f], 0);
+        const auto            distance = [&](const Point<dim> &x) {
+          double d = std::numeric_limits<double>::max();
+          if (n_segments == 0)
+            return x.distance(fronts[f][0].position);
+          for (unsigned int i = 0; i < n_segments; ++i)
+            d = std::min(d, polyline.segment_distance(i, x));
+          return d;
+        };
+
+        // The crown radii, in cells of the size of those the front crosses.
         double h = std::numeric_limits<double>::max();
         for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned() && cell->point_inside(tip.position))
+          if (cell->is_locally_owned() &&
+              (dim == 2 ? cell->point_inside(fronts[f][0].position) :
+                          distance(cell->center()) < 0.5 * cell->diameter()))
             h = std::min(h, cell->diameter() / std::sqrt(double(dim)));
         h                   = Utilities::MPI::min(h, comm);
         const double scale  = (parameters.crown_in_cells ? h : 1.);
@@ -143,49 +508,156 @@ namespace xcrack
         const auto   q_of_r = [&](const double r) {
           return std::clamp((r_sup - r) / (r_sup - r_inf), 0., 1.);
         };
-        // Rows e1, e2: global to tip-frame components.
-        Tensor<2, dim> R;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            R[0][d] = tip.e1[d];
-            R[1][d] = tip.e2[d];
-          }
+        const FrontCurve<dim> curve(fronts[f], 0.5 * r_sup);
 
-        // [I for K_I^aux = 1, I for K_II^aux = 1, J]
-        double local[3] = {0, 0, 0};
-        bool   clear    = true;
-        for (const FrontPoint<dim> &other : tips)
-          if (&other != &tip && other.position.distance(tip.position) < r_sup)
-            clear = false;
+        const FrontBasis basis =
+          (dim == 2 ? FrontBasis() :
+                      FrontBasis(parameters.smoothing,
+                                 parameters.legendre_degree,
+                                 curve.length,
+                                 curve.closed,
+                                 parameters.front_segments > 0 ?
+                                   parameters.front_segments :
+                                   static_cast<unsigned int>(
+                                     std::round(curve.length / r_sup))));
+        const unsigned int  n_test = basis.n_test_functions();
+        std::vector<double> local(n_test * n_integrals, 0.);
+
+        // Other fronts or tips inside the crown.
+        bool clear = true;
+        for (unsigned int g = 0; g < fronts.size(); ++g)
+          if (g != f)
+            for (const auto &other : fronts[g])
+              if (distance(other.position) < r_sup)
+                clear = false;
+
+        // Bounding box of the front grown by r_sup: cells beyond it carry
+        // no theta.
+        Point<dim> box_low = fronts[f][0].position, box_high = box_low;
+        for (const auto &p : fronts[f])
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              box_low[d]  = std::min(box_low[d], p.position[d] - r_sup);
+              box_high[d] = std::max(box_high[d], p.position[d] + r_sup);
+            }
+
         std::vector<Tensor<2, dim>> grad_u;
-        std::vector<double> q_vertex(GeometryInfo<dim>::vertices_per_cell);
+        // Per vertex: q e1 (made tangent to the boundary), psi_j(s).
+        std::array<Tensor<1, dim>, n_vertices>      w_vertex;
+        std::array<std::vector<double>, n_vertices> psi_vertex;
+        std::vector<unsigned int>                   active_tests;
+        std::vector<Tensor<2, dim>>                 grad_theta(n_test);
+        std::vector<unsigned int>                   near_segments;
         for (const auto &cell : dof_handler.active_cell_iterators())
           {
             if (!cell->is_locally_owned())
               continue;
+            {
+              const Point<dim> c      = cell->center();
+              const double     margin = cell->diameter();
+              bool             inside = true;
+              for (unsigned int d = 0; d < dim; ++d)
+                inside = inside && c[d] > box_low[d] - margin &&
+                         c[d] < box_high[d] + margin;
+              if (!inside)
+                continue;
+            }
+            // The segments that can be nearest to a point of the cell.
+            unsigned int first = 0, last = std::max(n_segments, 1u);
+            if (n_segments > 1)
+              {
+                const Point<dim> c    = cell->center();
+                double           best = distance(c);
+                if (best > r_sup + cell->diameter())
+                  continue;
+                first = n_segments;
+                last  = 0;
+                for (unsigned int i = 0; i < n_segments; ++i)
+                  if (curve.segment_distance(i, c) <= best + cell->diameter())
+                    {
+                      first = std::min(first, i);
+                      last  = std::max(last, i + 1);
+                    }
+              }
+
             double q_min = 1, q_max = 0;
             for (const unsigned int v : cell->vertex_indices())
               {
-                q_vertex[v] = q_of_r(cell->vertex(v).distance(tip.position));
-                q_min       = std::min(q_min, q_vertex[v]);
-                q_max       = std::max(q_max, q_vertex[v]);
+                const auto projection =
+                  curve.project(cell->vertex(v), first, last);
+                const double q = q_of_r(std::hypot(
+                  (projection.R * (cell->vertex(v) - projection.foot))[0],
+                  (projection.R * (cell->vertex(v) - projection.foot))[1]));
+                q_min          = std::min(q_min, q);
+                q_max          = std::max(q_max, q);
+                Tensor<1, dim> e1;
+                for (unsigned int d = 0; d < dim; ++d)
+                  e1[d] = projection.R[0][d];
+                w_vertex[v] = q * e1;
+                psi_vertex[v].resize(n_test);
+                for (unsigned int j = 0; j < n_test; ++j)
+                  psi_vertex[v][j] = basis.test_function(j, projection.s);
+                // The domain form holds if theta . n = 0 on the boundary
+                // (or the boundary is traction free and theta tangent to
+                // it, the end of an open 3D front on a free surface).
+                if (q > 0 && !projection.at_end)
+                  for (const unsigned int face : cell->face_indices())
+                    if (cell->face(face)->at_boundary())
+                      for (const unsigned int fv :
+                           cell->face(face)->vertex_indices())
+                        if (cell->face(face)->vertex_index(fv) ==
+                            cell->vertex_index(v))
+                          clear = false;
               }
-            if (q_max > 0)
-              for (const unsigned int f : cell->face_indices())
-                if (cell->face(f)->at_boundary())
-                  for (const unsigned int v : cell->face(f)->vertex_indices())
-                    if (cell->face(f)->vertex(v).distance(tip.position) < r_sup)
-                      clear = false;
-            const auto q_at = [&](const Point<dim> &xi) {
-              double value = 0;
-              for (unsigned int v = 0; v < q_vertex.size(); ++v)
-                value += q_vertex[v] *
-                         GeometryInfo<dim>::d_linear_shape_function(xi, v);
+            if (q_max == 0)
+              continue;
+            // Free surfaces: theta tangent to the boundary faces of the
+            // cell at their vertices (Gram-Schmidt over their normals).
+            if constexpr (dim == 3)
+              for (const unsigned int v : cell->vertex_indices())
+                {
+                  std::vector<Tensor<1, dim>> normals;
+                  for (const unsigned int face : cell->face_indices())
+                    if (cell->face(face)->at_boundary())
+                      for (const unsigned int fv :
+                           cell->face(face)->vertex_indices())
+                        if (cell->face(face)->vertex_index(fv) ==
+                            cell->vertex_index(v))
+                          {
+                            Tensor<1, dim> n =
+                              cross_product_3d(cell->face(face)->vertex(1) -
+                                                 cell->face(face)->vertex(0),
+                                               cell->face(face)->vertex(2) -
+                                                 cell->face(face)->vertex(0));
+                            for (const auto &m : normals)
+                              n -= (n * m) * m;
+                            if (n.norm() >
+                                1e-12 * cell->diameter() * cell->diameter())
+                              normals.push_back(n / n.norm());
+                          }
+                  for (const auto &n : normals)
+                    w_vertex[v] -= (w_vertex[v] * n) * n;
+                }
+            active_tests.clear();
+            for (unsigned int j = 0; j < n_test; ++j)
+              for (const unsigned int v : cell->vertex_indices())
+                if (psi_vertex[v][j] != 0 && w_vertex[v].norm() > 0)
+                  {
+                    active_tests.push_back(j);
+                    break;
+                  }
+            const auto theta_at = [&](const Point<dim>  &xi,
+                                      const unsigned int j) {
+              Tensor<1, dim> value;
+              for (unsigned int v = 0; v < n_vertices; ++v)
+                value += (psi_vertex[v][j] *
+                          GeometryInfo<dim>::d_linear_shape_function(xi, v)) *
+                         w_vertex[v];
               return value;
             };
 
-            // Domain terms: only where q varies.
-            if (q_max > q_min)
+            // Domain terms: where theta varies (2D: where q does).
+            if (dim == 3 || q_max > q_min)
               {
                 const FEValues<dim> &fe_values = fe_values_of(cell);
                 grad_u.resize(fe_values.n_quadrature_points);
@@ -195,65 +667,88 @@ namespace xcrack
                      fe_values.quadrature_point_indices())
                   {
                     const Point<dim> &xi = fe_values.get_quadrature().point(q);
-                    Tensor<1, dim>    grad_q_ref;
-                    for (unsigned int v = 0; v < q_vertex.size(); ++v)
-                      grad_q_ref +=
-                        q_vertex[v] *
-                        GeometryInfo<dim>::d_linear_shape_function_gradient(xi,
-                                                                            v);
-                    // grad_x q = (d xi / d x)^T grad_xi q, in the tip frame.
+                    // grad_x theta_j = sum_v psi_j(v) w_v (x) (d xi/d x)^T
+                    // grad_xi N_v.
                     const DerivativeForm<1, dim, dim> &inverse =
                       fe_values.inverse_jacobian(q);
-                    Tensor<1, dim> grad_q;
-                    for (unsigned int j = 0; j < dim; ++j)
-                      for (unsigned int k = 0; k < dim; ++k)
-                        grad_q[j] += grad_q_ref[k] * inverse[k][j];
-                    const Tensor<1, dim> dq = R * grad_q;
+                    std::array<Tensor<1, dim>, n_vertices> grad_N;
+                    for (unsigned int v = 0; v < n_vertices; ++v)
+                      {
+                        const Tensor<1, dim> g =
+                          GeometryInfo<dim>::d_linear_shape_function_gradient(
+                            xi, v);
+                        grad_N[v] = Tensor<1, dim>();
+                        for (unsigned int j = 0; j < dim; ++j)
+                          for (unsigned int k = 0; k < dim; ++k)
+                            grad_N[v][j] += g[k] * inverse[k][j];
+                      }
+                    for (const unsigned int j : active_tests)
+                      {
+                        grad_theta[j] = Tensor<2, dim>();
+                        for (unsigned int v = 0; v < n_vertices; ++v)
+                          grad_theta[j] +=
+                            outer_product(psi_vertex[v][j] * w_vertex[v],
+                                          grad_N[v]);
+                      }
 
-                    const Tensor<2, dim> du = R * grad_u[q] * transpose(R);
+                    const Tensor<2, dim>         &du  = grad_u[q];
                     const SymmetricTensor<2, dim> eps = symmetrize(du);
                     const SymmetricTensor<2, dim> sigma =
                       material.stress<dim>(eps);
-                    const Tensor<1, dim> x =
-                      R * (fe_values.quadrature_point(q) - tip.position);
-                    const double r     = x.norm();
-                    const double theta = std::atan2(x[1], x[0]);
+                    const Point<dim> &x   = fe_values.quadrature_point(q);
+                    const auto projection = curve.project(x, first, last);
+                    const Tensor<1, dim> xl =
+                      projection.R * (x - projection.foot);
+                    const double r     = std::hypot(xl[0], xl[1]);
+                    const double angle = std::atan2(xl[1], xl[0]);
                     const double JxW   = fe_values.JxW(q);
 
-                    for (unsigned int m = 0; m < 2; ++m)
+                    // T_kj with I = int T_kj theta_k,j.
+                    Tensor<2, dim> T[n_integrals];
+                    for (unsigned int m = 0; m < n_modes; ++m)
                       {
-                        const Tensor<2, 3> du3 =
-                          aux[m].displacement_gradient(r, theta);
-                        const SymmetricTensor<2, 3> s3 =
-                          aux[m].stress(r, theta);
-                        Tensor<2, dim>          du_aux;
-                        SymmetricTensor<2, dim> sigma_aux, eps_aux;
-                        for (unsigned int i = 0; i < dim; ++i)
-                          for (unsigned int j = 0; j < dim; ++j)
-                            du_aux[i][j] = du3[i][j];
-                        for (unsigned int i = 0; i < dim; ++i)
-                          for (unsigned int j = i; j < dim; ++j)
-                            sigma_aux[i][j] = s3[i][j];
-                        eps_aux          = symmetrize(du_aux);
-                        double integrand = -(sigma * eps_aux) * dq[0];
-                        for (unsigned int i = 0; i < dim; ++i)
-                          for (unsigned int j = 0; j < dim; ++j)
-                            integrand += (sigma[i][j] * du_aux[i][0] +
-                                          sigma_aux[i][j] * du[i][0]) *
-                                         dq[j];
-                        local[m] += integrand * JxW;
+                        const Tensor<2, dim> du_aux =
+                          aux_gradient(aux[m], projection, xl, r, angle);
+                        const SymmetricTensor<2, dim> eps_aux =
+                          symmetrize(du_aux);
+                        const SymmetricTensor<2, dim> sigma_aux =
+                          material.stress<dim>(eps_aux);
+                        T[m] = transpose(du_aux) * Tensor<2, dim>(sigma) +
+                               transpose(du) * Tensor<2, dim>(sigma_aux);
+                        const double w = sigma * eps_aux;
+                        for (unsigned int k = 0; k < dim; ++k)
+                          T[m][k][k] -= w;
                       }
-                    double integrand = -0.5 * (sigma * eps) * dq[0];
-                    for (unsigned int i = 0; i < dim; ++i)
-                      for (unsigned int j = 0; j < dim; ++j)
-                        integrand += sigma[i][j] * du[i][0] * dq[j];
-                    local[2] += integrand * JxW;
+                    T[n_modes] = transpose(du) * Tensor<2, dim>(sigma);
+                    for (unsigned int k = 0; k < dim; ++k)
+                      T[n_modes][k][k] -= 0.5 * (sigma * eps);
+                    for (const unsigned int j : active_tests)
+                      for (unsigned int m = 0; m < n_integrals; ++m)
+                        local[j * n_integrals + m] +=
+                          scalar_product(T[m], grad_theta[j]) * JxW;
+
+                    // Along a curved 3D front the auxiliary stress is not
+                    // in equilibrium: + int div(sigma^aux)_i u_i,k theta_k.
+                    if constexpr (dim == 3)
+                      {
+                        Tensor<1, dim> div_aux[n_modes];
+                        aux_stress_divergence(
+                          aux, curve, x, angle, first, last, div_aux);
+                        for (const unsigned int j : active_tests)
+                          {
+                            const Tensor<1, dim> du_theta =
+                              du * theta_at(xi, j);
+                            for (unsigned int m = 0; m < n_modes; ++m)
+                              local[j * n_integrals + m] +=
+                                (div_aux[m] * du_theta) * JxW;
+                          }
+                      }
                   }
               }
 
-            // Lip term: - int q t_i [d u_i / d x_1] over both lips, t = p n
-            // on the lsn > 0 lip and -p n on the other.
-            if (lip_pressure == nullptr || q_max == 0)
+            // Lip term: - int t_i u_i,k theta_k over both lips, t = p n on
+            // the lsn > 0 lip and -p n on the other.
+            if (lip_pressure == nullptr)
               continue;
             std::vector<Point<dim>>     points;
             std::vector<double>         weights;
@@ -273,54 +768,66 @@ namespace xcrack
             side_values[displacement].get_function_gradients(solution, grad_u);
             for (unsigned int k = 0; k < points.size(); ++k)
               {
-                // n ds, to the lsn > 0 lip, in the tip frame.
-                const Tensor<1, dim> n_ds =
-                  R * CellQuadrature::mapped_normal<dim>(
-                        side_values.jacobian(2 * k), normals[k], weights[k]);
+                // n ds, to the lsn > 0 lip.
+                const Tensor<1, dim> n_ds = CellQuadrature::mapped_normal<dim>(
+                  side_values.jacobian(2 * k), normals[k], weights[k]);
                 const Point<dim> x_global = side_values.quadrature_point(2 * k);
                 const double     p        = lip_pressure->value(x_global);
-                const double     q        = q_at(points[k]);
-                const double     r = (R * (x_global - tip.position)).norm();
-                // The lsn > 0 lip lies at theta = pi in the tip frame if e2
+                const auto projection    = curve.project(x_global, first, last);
+                const Tensor<2, dim> &R  = projection.R;
+                const Tensor<1, dim>  xl = R * (x_global - projection.foot);
+                const double          r  = std::hypot(xl[0], xl[1]);
+                // The lsn > 0 lip lies at angle pi in the front frame if e2
                 // points to it, else at -pi (the start tip of a segment).
-                const double theta_plus =
-                  (n_ds[1] > 0 ? 1. : -1.) * numbers::PI;
-                for (unsigned int m = 0; m < 2; ++m)
+                const double angle_plus =
+                  ((R * n_ds)[1] > 0 ? 1. : -1.) * numbers::PI;
+                Tensor<2, dim> jump[n_integrals];
+                for (unsigned int m = 0; m < n_modes; ++m)
+                  jump[m] =
+                    aux_gradient(aux[m], projection, xl, r, angle_plus) -
+                    aux_gradient(aux[m], projection, xl, r, -angle_plus);
+                jump[n_modes] = grad_u[2 * k] - grad_u[2 * k + 1];
+                for (const unsigned int j : active_tests)
                   {
-                    const Tensor<2, 3> plus =
-                      aux[m].displacement_gradient(r, theta_plus);
-                    const Tensor<2, 3> minus =
-                      aux[m].displacement_gradient(r, -theta_plus);
-                    double jump = 0;
-                    for (unsigned int i = 0; i < dim; ++i)
-                      jump += n_ds[i] * (plus[i][0] - minus[i][0]);
-                    local[m] -= q * p * jump;
+                    const Tensor<1, dim> theta = theta_at(points[k], j);
+                    for (unsigned int m = 0; m < n_integrals; ++m)
+                      local[j * n_integrals + m] -=
+                        p * (n_ds * (jump[m] * theta));
                   }
-                const Tensor<2, dim> plus = R * grad_u[2 * k] * transpose(R);
-                const Tensor<2, dim> minus =
-                  R * grad_u[2 * k + 1] * transpose(R);
-                double jump = 0;
-                for (unsigned int i = 0; i < dim; ++i)
-                  jump += n_ds[i] * (plus[i][0] - minus[i][0]);
-                local[2] -= q * p * jump;
               }
           }
 
-        double global[3];
-        Utilities::MPI::sum(ArrayView<const double>(local, 3),
+        std::vector<double> b_all(local.size());
+        Utilities::MPI::sum(ArrayView<const double>(local),
                             comm,
-                            ArrayView<double>(global, 3));
-        FrontValues<dim> values;
-        values.point = tip;
-        values.k_I   = 0.5 * e_star * global[0];
-        values.k_II  = 0.5 * e_star * global[1];
-        values.g     = global[2];
-        values.g_irwin =
-          (values.k_I * values.k_I + values.k_II * values.k_II) / e_star;
-        values.r_inf       = r_inf;
-        values.r_sup       = r_sup;
-        values.crown_clear = !Utilities::MPI::logical_or(!clear, comm);
-        result.push_back(values);
+                            ArrayView<double>(b_all));
+        clear = !Utilities::MPI::logical_or(!clear, comm);
+        std::vector<std::vector<double>> nodal(n_integrals);
+        for (unsigned int m = 0; m < n_integrals; ++m)
+          {
+            std::vector<double> b(n_test);
+            for (unsigned int j = 0; j < n_test; ++j)
+              b[j] = b_all[j * n_integrals + m];
+            nodal[m] = basis.values_at_nodes(b);
+          }
+        for (unsigned int k = 0; k < basis.nodes().size(); ++k)
+          {
+            FrontValues<dim> values;
+            values.front = f;
+            values.point = curve.at(basis.nodes()[k]);
+            values.k_I   = 0.5 * e_star * nodal[0][k];
+            values.k_II  = 0.5 * e_star * nodal[1][k];
+            if (dim == 3)
+              values.k_III = material.mu() * nodal[n_modes - 1][k];
+            values.g = nodal[n_modes][k];
+            values.g_irwin =
+              (values.k_I * values.k_I + values.k_II * values.k_II) / e_star +
+              values.k_III * values.k_III / (2 * material.mu());
+            values.r_inf       = r_inf;
+            values.r_sup       = r_sup;
+            values.crown_clear = clear;
+            result.push_back(values);
+          }
       }
     return result;
   }
@@ -328,4 +835,5 @@ namespace xcrack
 
 
   template class InteractionIntegral<2>;
+  template class InteractionIntegral<3>;
 } // namespace xcrack

@@ -14,23 +14,26 @@ namespace xcrack
   using namespace dealii;
 
   /**
-   * K_I and K_II at a 2D tip from the opening and sliding of the lips
-   * behind it, an estimate independent of the interaction integral (and of
-   * its crowns): near the tip the Williams field gives
+   * K_I, K_II (and K_III in 3D) at a 2D tip or a point of a 3D front from
+   * the opening and sliding of the lips behind it, an estimate independent of
+   * the interaction integral (and of its crowns): near the tip the Williams
+   * field gives
    *
    *   [[u_2]](r) = (kappa + 1) / mu * K_I  * sqrt(r / (2 pi)),
    *   [[u_1]](r) = (kappa + 1) / mu * K_II * sqrt(r / (2 pi)),
+   *   [[u_3]](r) = 4 / mu * K_III * sqrt(r / (2 pi)),
    *
    * with [[u]] = u(upper lip, theta = pi) - u(lower lip) in the tip frame.
    * The apparent K(r) of @p n_samples points evenly spread over [@p r_min,
    * @p r_max] behind the tip is fitted by a straight line in r and
    * extrapolated to r = 0, which removes the first correction (the T-stress
    * does not open the lips; the next term of the expansion grows like r).
-   * The lips are sampled 1e-8 (relative to r) off the crack on each side.
+   * The lips are sampled 1e-8 (relative to r) off the crack on each side,
+   * along -e1 in the plane (e1, e2) of the front point.
    * Collective; every rank gets the result.
    */
   template <int dim>
-  std::array<double, 2>
+  std::array<double, 3>
   displacement_jump_k(const DoFHandler<dim>               &dof_handler,
                       const TrilinosWrappers::MPI::Vector &solution,
                       const FrontPoint<dim>               &tip,

@@ -9,6 +9,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <xcrack/crack/crack_geometry.h>
+#include <xcrack/fracture/front_basis.h>
 #include <xcrack/material.h>
 #include <xcrack/parsed_function.h>
 
@@ -33,6 +34,9 @@ namespace xcrack
    * layers in the crown as the mesh is refined. `Reference K` gives exact
    * or handbook values (expressions of x, y[, z] of the front point) to
    * print the error against.
+   *
+   * Along a 3D front, `Smoothing`, `Legendre degree` and `Front segments`
+   * choose the FrontBasis on which K(s) and G(s) are discretised.
    */
   struct FractureParameters
   {
@@ -43,10 +47,15 @@ namespace xcrack
     void
     parse_parameters(ParameterHandler &prm, const FunctionConstants &constants);
 
-    bool   compute        = true;
-    double crown_inner    = 2;
-    double crown_outer    = 4;
-    bool   crown_in_cells = true;
+    bool             compute         = true;
+    double           crown_inner     = 2;
+    double           crown_outer     = 4;
+    bool             crown_in_cells  = true;
+    FrontBasis::Type smoothing       = FrontBasis::Type::legendre;
+    unsigned int     legendre_degree = 5;
+    /// Equal segments of a 3D front (nodes of the Lagrange bases, points
+    /// where K is reported); 0: about r_sup long each.
+    unsigned int front_segments = 0;
     /// K_I; K_II (2D) or K_I; K_II; K_III (3D); null if not given.
     std::shared_ptr<Function<2>> reference_2d;
     std::shared_ptr<Function<3>> reference_3d;
@@ -58,6 +67,8 @@ namespace xcrack
   template <int dim>
   struct FrontValues
   {
+    /// Which front (of CrackSurface::fronts()) the point lies on.
+    unsigned int    front = 0;
     FrontPoint<dim> point;
     double          k_I = 0, k_II = 0, k_III = 0;
     /// G from the domain form of the J integral (G-theta).
@@ -78,21 +89,39 @@ namespace xcrack
 
   /**
    * Stress intensity factors by the interaction integral (Yau, Wang and
-   * Corten; domain form of Moës, Dolbow and Belytschko 1999) and G by the
-   * domain J integral, at the tips of a 2D crack:
+   * Corten; domain form of Moes, Dolbow and Belytschko 1999; in 3D the
+   * G-theta form of Destuynder and Djaoua with the smoothing of Code_Aster)
+   * and G by G-theta, along the fronts of a crack.
    *
-   *   I = int_A (sigma_ij du^aux_i/dx_1 + sigma^aux_ij du_i/dx_1
-   *              - sigma_ik eps^aux_ik delta_1j) dq/dx_j dA
-   *       - int_lips q t_i [du^aux_i/dx_1]
+   * A virtual crack extension theta (vanishing far from the front, equal
+   * to e1 on it) gives
    *
-   * in the tip frame (x_1 along e1, x_2 along e2), with the Williams fields
-   * of K^aux_I = 1 (then K_I = E* I / 2) and of K^aux_II = 1 (K_II), E* =
-   * E / (1 - nu^2) in plane strain, E in plane stress; the lip term is
-   * there when the lips carry a pressure. The domain terms are integrated
-   * with the cell's X-FEM rule (cut and tip rules where the crack is), as
-   * the solution's jumps and singular gradients require.
+   *   G(theta) = int_V (sigma_ij u_i,k - W delta_jk) theta_k,j dV
+   *              - int_lips t_i u_i,k theta_k dA  =  int_front G theta.e1 ds
    *
-   * 3D (with smoothing of K(s) along the front) is not implemented yet.
+   * and, with u replaced by u + u^aux, the interaction integral
+   *
+   *   I(theta) = int_V (sigma_ij u^aux_i,k + sigma^aux_ij u_i,k
+   *                     - sigma_il eps^aux_il delta_jk) theta_k,j dV
+   *              - int_lips t_i u^aux_i,k theta_k dA
+   *            = int_front (2/E* (K_I K^aux_I + K_II K^aux_II)
+   *                         + K_III K^aux_III / mu) theta.e1 ds,
+   *
+   * E* = E/(1 - nu^2) (3D, plane strain) or E (plane stress). u^aux are
+   * the Williams fields of a unit K in the frame (e1, e2, e3) of the point
+   * of the front nearest to x, r and the angle from e1 in the plane (e1,
+   * e2) (plane strain fields, their curvature terms neglected: the error
+   * vanishes with the crown). The lip term is there when the lips carry a
+   * pressure.
+   *
+   * theta_j = psi_j(s) q(r) e1(s), with q = 1 within r_inf of the front, 0
+   * beyond r_sup, is interpolated on the Q1 hats of the mesh (its gradient
+   * is then exact cell by cell), and made tangent to the boundary at the
+   * boundary vertices of a 3D body (the free surface a front may end on);
+   * the test functions psi_j are those of the FrontBasis (one, psi = 1, at
+   * a 2D tip), and the b_j = I(theta_j) give K(s) at the basis nodes. The
+   * domain terms are integrated with the cell's X-FEM rule (cut and tip
+   * rules where the crack is), as the jumps and singular gradients need.
    */
   template <int dim>
   class InteractionIntegral
@@ -114,17 +143,19 @@ namespace xcrack
                         const Material           &material);
 
     /**
-     * K and G at each of @p tips (the tips of a 2D crack, frames of
-     * BENCHMARKS.md) from the ghosted @p solution on @p dof_handler.
+     * K and G along each of @p fronts (ordered front points with frames of
+     * BENCHMARKS.md, a closed front repeating its first point at the end;
+     * a 2D tip is a front of one point) from the ghosted @p solution on
+     * @p dof_handler, at the nodes of each front's FrontBasis.
      * @p lip_pressure may be null. Collective.
      */
     std::vector<FrontValues<dim>>
-    compute(const DoFHandler<dim>               &dof_handler,
-            const TrilinosWrappers::MPI::Vector &solution,
-            const std::vector<FrontPoint<dim>>  &tips,
-            const FEValuesOf                    &fe_values_of,
-            const Function<dim>                 *lip_pressure,
-            const LipsOf                        &lips_of) const;
+    compute(const DoFHandler<dim>                           &dof_handler,
+            const TrilinosWrappers::MPI::Vector             &solution,
+            const std::vector<std::vector<FrontPoint<dim>>> &fronts,
+            const FEValuesOf                                &fe_values_of,
+            const Function<dim>                             *lip_pressure,
+            const LipsOf                                    &lips_of) const;
 
   private:
     const FractureParameters &parameters;
