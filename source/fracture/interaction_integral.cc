@@ -746,9 +746,14 @@ namespace xcrack
                   }
               }
 
-            // Lip term: - int t_i u_i,k theta_k over both lips, t = p n on
-            // the lsn > 0 lip and -p n on the other.
-            if (lip_pressure == nullptr)
+            // Lip terms. With a pressure: - int t_i [u_i,k] theta_k, t = p n
+            // on the lsn > 0 lip and -p n on the other. Along a curved 3D
+            // front the auxiliary fields load the lips too: their hoop
+            // strain u_1 / rho is not zero on the lips in mode II, so
+            // sigma^aux . n is not, and + int (sigma^aux n . u_,k theta_k)
+            // [+ lip] - (the same) [- lip] completes the identity (it
+            // vanishes for straight fronts and in mode I).
+            if (lip_pressure == nullptr && dim == 2)
               continue;
             std::vector<Point<dim>>     points;
             std::vector<double>         weights;
@@ -772,7 +777,8 @@ namespace xcrack
                 const Tensor<1, dim> n_ds = CellQuadrature::mapped_normal<dim>(
                   side_values.jacobian(2 * k), normals[k], weights[k]);
                 const Point<dim> x_global = side_values.quadrature_point(2 * k);
-                const double     p        = lip_pressure->value(x_global);
+                const double     p =
+                  (lip_pressure ? lip_pressure->value(x_global) : 0.);
                 const auto projection    = curve.project(x_global, first, last);
                 const Tensor<2, dim> &R  = projection.R;
                 const Tensor<1, dim>  xl = R * (x_global - projection.foot);
@@ -794,6 +800,25 @@ namespace xcrack
                       local[j * n_integrals + m] -=
                         p * (n_ds * (jump[m] * theta));
                   }
+                if constexpr (dim == 3)
+                  for (unsigned int m = 0; m < n_modes; ++m)
+                    {
+                      const Tensor<1, dim> t_plus =
+                        material.stress<dim>(symmetrize(aux_gradient(
+                          aux[m], projection, xl, r, angle_plus))) *
+                        n_ds;
+                      const Tensor<1, dim> t_minus =
+                        material.stress<dim>(symmetrize(aux_gradient(
+                          aux[m], projection, xl, r, -angle_plus))) *
+                        n_ds;
+                      for (const unsigned int j : active_tests)
+                        {
+                          const Tensor<1, dim> theta = theta_at(points[k], j);
+                          local[j * n_integrals + m] +=
+                            t_plus * (grad_u[2 * k] * theta) -
+                            t_minus * (grad_u[2 * k + 1] * theta);
+                        }
+                    }
               }
           }
 
