@@ -920,8 +920,12 @@ namespace xcrack
           const auto   rounded = [&](const double k) {
             return std::round(k / quantum) * quantum + 0.;
           };
-          pcout << "  front " << f + 1 << ": " << n << " points, "
-                << std::scientific << std::setprecision(6);
+          std::string basis;
+          for (const auto &v : values)
+            if (v.front == f)
+              basis = v.basis;
+          pcout << "  front " << f + 1 << ": " << n << " points (" << basis
+                << "), " << std::scientific << std::setprecision(6);
           for (unsigned int m = 0; m < 3; ++m)
             {
               k_mean[m] /= n;

@@ -168,6 +168,20 @@ namespace xcrack
 
 
 
+  std::string
+  FrontBasis::description() const
+  {
+    if (length == 0)
+      return "tip";
+    if (type == Type::legendre)
+      return (closed ? "Fourier degree " : "Legendre degree ") +
+             std::to_string(degree);
+    return (type == Type::lagrange ? "Lagrange, " : "regularised Lagrange, ") +
+           std::to_string(segments) + " segments";
+  }
+
+
+
   const std::vector<double> &
   FrontBasis::nodes() const
   {

@@ -510,10 +510,17 @@ namespace xcrack
         };
         const FrontCurve<dim> curve(fronts[f], 0.5 * r_sup);
 
+        // A test function must not vary along the front on a scale shorter
+        // than the crown, or theta_j is not resolved by the crown cells:
+        // the degree is capped at L / (2 r_sup) (said on screen).
+        const unsigned int degree =
+          std::min<unsigned int>(parameters.legendre_degree,
+                                 static_cast<unsigned int>(curve.length /
+                                                           (2 * r_sup)));
         const FrontBasis basis =
           (dim == 2 ? FrontBasis() :
                       FrontBasis(parameters.smoothing,
-                                 parameters.legendre_degree,
+                                 degree,
                                  curve.length,
                                  curve.closed,
                                  parameters.front_segments > 0 ?
@@ -839,6 +846,7 @@ namespace xcrack
           {
             FrontValues<dim> values;
             values.front = f;
+            values.basis = basis.description();
             values.point = curve.at(basis.nodes()[k]);
             values.k_I   = 0.5 * e_star * nodal[0][k];
             values.k_II  = 0.5 * e_star * nodal[1][k];

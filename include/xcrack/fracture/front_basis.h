@@ -81,6 +81,10 @@ namespace xcrack
     std::vector<double>
     values_at_nodes(const std::vector<double> &b) const;
 
+    /// E.g. "Fourier degree 5", "Lagrange, 25 segments" (for the screen).
+    std::string
+    description() const;
+
   private:
     /// phi_i(s).
     double

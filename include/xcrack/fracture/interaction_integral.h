@@ -68,7 +68,9 @@ namespace xcrack
   struct FrontValues
   {
     /// Which front (of CrackSurface::fronts()) the point lies on.
-    unsigned int    front = 0;
+    unsigned int front = 0;
+    /// The FrontBasis of that front (FrontBasis::description()).
+    std::string     basis;
     FrontPoint<dim> point;
     double          k_I = 0, k_II = 0, k_III = 0;
     /// G from the domain form of the J integral (G-theta).
