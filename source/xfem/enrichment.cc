@@ -138,6 +138,7 @@ namespace xcrack
                               const EnrichmentParameters &parameters)
     : crack(crack)
     , parameters(parameters)
+    , assembly_points_1d(degree + 1)
     , heaviside_function(crack)
   {
     for (unsigned int k = 0; k < BranchFunction<dim>::n_functions; ++k)
@@ -323,22 +324,56 @@ namespace xcrack
           near_front[cell->active_cell_index()] =
             (kind != CellKind::tip && distance < cell->diameter());
 
+
+          // The fraction of the cell on the negative side as the assembly
+          // will see it (special_quadrature): cells near the front, split or
+          // not, are integrated with the tip rule, which need not resolve a
+          // thin sliver that the exact cut holds, and H (= the sign of lsn,
+          // also beyond the front) may take both values in them. A
+          // Heaviside function counted on a sliver the rule does not see
+          // would be a copy of the standard one in the matrix (singular):
+          // measure H on the points of the rule itself.
+          const bool near = near_front[cell->active_cell_index()];
+          double     minus;
+          if (kind == CellKind::plain && !near)
+            // Not on the crack: the whole cell lies on one side of it.
+            minus = (crack.lsn(cell->center()) >= 0 ? 0. : 1.);
+          else if (kind == CellKind::split && !near)
+            minus = CellQuadrature::cut_cell_rule<dim>(lsn, 2).second;
+          else
+            {
+              const Quadrature<dim> rule = CellQuadrature::tip_cell_rule<dim>(
+                lsn,
+                lst,
+                std::max(assembly_points_1d, parameters.tip_quadrature_points));
+              double total = 0;
+              minus        = 0;
+              for (unsigned int q = 0; q < rule.size(); ++q)
+                {
+                  Point<dim> x;
+                  for (const unsigned int v : cell->vertex_indices())
+                    x +=
+                      GeometryInfo<dim>::d_linear_shape_function(rule.point(q),
+                                                                 v) *
+                      cell->vertex(v);
+                  total += rule.weight(q);
+                  if (heaviside_function.value(x) < 0)
+                    minus += rule.weight(q);
+                }
+              minus /= total;
+            }
           if (kind == CellKind::plain)
             {
-              // Not on the crack: the whole cell lies on one side of it.
-              const double cell_side = crack.lsn(cell->center());
-              fraction_minus[cell->active_cell_index()] =
-                (cell_side >= 0 ? 0. : 1.);
+              fraction_minus[cell->active_cell_index()] = minus;
               for (const unsigned int v : cell->vertex_indices())
-                (cell_side >= 0 ? volume_plus :
-                                  volume_minus)[cell->vertex_index(v)] +=
-                  cell->measure();
+                {
+                  volume_minus[cell->vertex_index(v)] +=
+                    minus * cell->measure();
+                  volume_plus[cell->vertex_index(v)] +=
+                    (1 - minus) * cell->measure();
+                }
               continue;
             }
-          const double minus =
-            (kind == CellKind::split ?
-               CellQuadrature::cut_cell_rule<dim>(lsn, 2).second :
-               0.5);
           fraction_minus[cell->active_cell_index()] = minus;
           for (const unsigned int v : cell->vertex_indices())
             {

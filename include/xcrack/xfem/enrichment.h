@@ -234,8 +234,10 @@ namespace xcrack
     vertex_values(const typename Triangulation<dim>::cell_iterator &cell,
                   const bool normal) const;
 
-    const CrackGeometry<dim>                         &crack;
-    const EnrichmentParameters                        parameters;
+    const CrackGeometry<dim>  &crack;
+    const EnrichmentParameters parameters;
+    /// Gauss points per direction of the assembly's rules (degree + 1).
+    const unsigned int                                assembly_points_1d;
     HeavisideFunction<dim>                            heaviside_function;
     std::vector<std::unique_ptr<BranchFunction<dim>>> branch_functions;
     hp::FECollection<dim>                             fe_collection;
