@@ -587,6 +587,18 @@ namespace xcrack
                     }
               }
 
+            // The boundary faces of the cell that hold its vertex v.
+            const auto boundary_faces_at = [&](const unsigned int v) {
+              std::vector<unsigned int> faces;
+              for (const unsigned int face : cell->face_indices())
+                if (cell->face(face)->at_boundary())
+                  for (const unsigned int fv :
+                       cell->face(face)->vertex_indices())
+                    if (cell->face(face)->vertex_index(fv) ==
+                        cell->vertex_index(v))
+                      faces.push_back(face);
+              return faces;
+            };
             double q_min = 1, q_max = 0;
             for (const unsigned int v : cell->vertex_indices())
               {
@@ -607,14 +619,9 @@ namespace xcrack
                 // The domain form holds if theta . n = 0 on the boundary
                 // (or the boundary is traction free and theta tangent to
                 // it, the end of an open 3D front on a free surface).
-                if (q > 0 && !projection.at_end)
-                  for (const unsigned int face : cell->face_indices())
-                    if (cell->face(face)->at_boundary())
-                      for (const unsigned int fv :
-                           cell->face(face)->vertex_indices())
-                        if (cell->face(face)->vertex_index(fv) ==
-                            cell->vertex_index(v))
-                          clear = false;
+                if (q > 0 && !projection.at_end &&
+                    !boundary_faces_at(v).empty())
+                  clear = false;
               }
             if (q_max == 0)
               continue;
@@ -624,24 +631,19 @@ namespace xcrack
               for (const unsigned int v : cell->vertex_indices())
                 {
                   std::vector<Tensor<1, dim>> normals;
-                  for (const unsigned int face : cell->face_indices())
-                    if (cell->face(face)->at_boundary())
-                      for (const unsigned int fv :
-                           cell->face(face)->vertex_indices())
-                        if (cell->face(face)->vertex_index(fv) ==
-                            cell->vertex_index(v))
-                          {
-                            Tensor<1, dim> n =
-                              cross_product_3d(cell->face(face)->vertex(1) -
-                                                 cell->face(face)->vertex(0),
-                                               cell->face(face)->vertex(2) -
-                                                 cell->face(face)->vertex(0));
-                            for (const auto &m : normals)
-                              n -= (n * m) * m;
-                            if (n.norm() >
-                                1e-12 * cell->diameter() * cell->diameter())
-                              normals.push_back(n / n.norm());
-                          }
+                  for (const unsigned int face : boundary_faces_at(v))
+                    {
+                      Tensor<1, dim> n =
+                        cross_product_3d(cell->face(face)->vertex(1) -
+                                           cell->face(face)->vertex(0),
+                                         cell->face(face)->vertex(2) -
+                                           cell->face(face)->vertex(0));
+                      for (const auto &m : normals)
+                        n -= (n * m) * m;
+                      if (n.norm() >
+                          1e-12 * cell->diameter() * cell->diameter())
+                        normals.push_back(n / n.norm());
+                    }
                   for (const auto &n : normals)
                     w_vertex[v] -= (w_vertex[v] * n) * n;
                 }
