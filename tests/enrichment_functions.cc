@@ -60,7 +60,7 @@ main(int argc, char **argv)
           const double h = cell->extent_in_direction(0);
           for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
             {
-              const Function<2> *f = enrichment.enrichment_function(fe, i);
+              const Function<2> *f = enrichment.enrichment_function(cell, i);
               if (f == nullptr)
                 continue;
               // The index of the DoF in its scalar base element.

@@ -163,8 +163,9 @@ namespace xcrack
     hp::QCollection<dim - 1>                  face_quadrature_collection;
     DoFHandler<dim>                           dof_handler;
     LevelSetFields<dim>                       level_sets;
-    /// The crack as the level-set fields draw it (lips and ordered front).
-    CrackSurface<dim> crack_surface;
+    /// Each crack as the level-set fields draw it (lips and ordered
+    /// fronts).
+    std::vector<CrackSurface<dim>> crack_surfaces;
 
     IndexSet                       locally_owned_dofs;
     IndexSet                       locally_relevant_dofs;

@@ -57,10 +57,13 @@ namespace xcrack
     : mpi_communicator(mpi_communicator)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , prm(prm)
+    // Only the 2:1 balance, which p4est enforces globally: the other
+    // smoothing flags act on each rank's part of the mesh (with them, a
+    // cell near a partition boundary was refined on one rank and not on
+    // two, and K differed in the sixth digit: two collinear cracks, fifth
+    // mesh).
     , triangulation(mpi_communicator,
-                    typename Triangulation<dim>::MeshSmoothing(
-                      Triangulation<dim>::smoothing_on_refinement |
-                      Triangulation<dim>::smoothing_on_coarsening))
+                    Triangulation<dim>::limit_level_difference_at_vertices)
     , level_sets(triangulation)
   {
     run_parameters.parse_parameters(prm);
@@ -105,13 +108,10 @@ namespace xcrack
                 "without any prescribed displacement the rigid body motions "
                 "are free and the problem has no unique solution.");
 
-    check_input(cracks.size() <= 1,
-                "Cracks/Number of cracks = " + std::to_string(cracks.size()) +
-                  ": the X-FEM enrichment handles one crack for now.");
     check_input(!boundary_conditions.lip_pressure || cracks.size() > 0,
                 "Boundary conditions/Lip pressure is set but there is no "
                 "crack (Cracks/Number of cracks = 0).");
-    if (cracks.size() == 1)
+    if (cracks.size() > 0)
       {
         EnrichmentParameters enrichment_parameters;
         enrichment_parameters.parse_parameters(prm);
@@ -121,6 +121,11 @@ namespace xcrack
                                       mpi_communicator) == 1,
                         "Enrichment/Gather tip DoFs = true is implemented for "
                         "2D runs on one rank only.");
+            check_input(cracks.size() == 1,
+                        "Enrichment/Gather tip DoFs = true ties the DoFs of "
+                        "one tip zone: it needs a single crack (Cracks/Number "
+                        "of cracks = " +
+                          std::to_string(cracks.size()) + ").");
             check_input(
               cracks[0]
                   .front(0, GridTools::compute_bounding_box(triangulation))
@@ -129,9 +134,18 @@ namespace xcrack
               "gathering ties the DoFs of one tip zone (set Tips = start or "
               "end, or switch gathering off).");
           }
-        enrichment = std::make_unique<Enrichment<dim>>(cracks[0],
+        std::vector<const CrackGeometry<dim> *> crack_list;
+        for (unsigned int c = 0; c < cracks.size(); ++c)
+          crack_list.push_back(&cracks[c]);
+        enrichment = std::make_unique<Enrichment<dim>>(crack_list,
                                                        degree,
                                                        enrichment_parameters);
+        // Classify the coarse mesh once now: cracks whose enriched zones
+        // meet stop the run here, before any result is written.
+        {
+          DoFHandler<dim> probe(triangulation);
+          enrichment->set_fe_indices(probe);
+        }
         // Gauss rules per element: the cells of the tip zone carry the
         // non-polynomial branch functions and get two more points.
         for (const auto &fe : enrichment->get_fe_collection())
@@ -227,33 +241,47 @@ namespace xcrack
   void
   ElasticityProblem<dim>::report_crack_surface()
   {
-    crack_surface.extract(level_sets, 0);
-    const double opening = crack_surface.max_opening(dof_handler, solution);
-    statistics.add_value("crack_measure", crack_surface.measure());
-    statistics.add_value("front_length", crack_surface.front_length());
-    statistics.add_value("max_opening", opening);
+    // One line per crack ("crack:" alone, "crack 2:" among several); the
+    // statistics add up the measures and keep the largest opening.
+    crack_surfaces.resize(cracks.size());
+    double measure = 0, front_length = 0, largest_opening = 0;
+    for (unsigned int c = 0; c < cracks.size(); ++c)
+      {
+        CrackSurface<dim> &surface = crack_surfaces[c];
+        surface.extract(level_sets, c);
+        const double opening = surface.max_opening(dof_handler, solution);
+        measure += surface.measure();
+        front_length += surface.front_length();
+        largest_opening = std::max(largest_opening, opening);
 
-    std::ostringstream line;
-    line << std::setprecision(6);
-    if (dim == 2)
-      {
-        line << "  crack: length " << crack_surface.measure() << ", tips at";
-        for (const auto &front : crack_surface.fronts())
-          line << " (" << front[0].position << ")";
+        const std::string name =
+          (cracks.size() > 1 ? "crack " + std::to_string(c + 1) : "crack");
+        std::ostringstream line;
+        line << std::setprecision(6);
+        if (dim == 2)
+          {
+            line << "  " << name << ": length " << surface.measure()
+                 << ", tips at";
+            for (const auto &front : surface.fronts())
+              line << " (" << front[0].position << ")";
+          }
+        else
+          {
+            unsigned int n_points = 0;
+            for (const auto &front : surface.fronts())
+              n_points += front.size();
+            line << "  " << name << ": area " << surface.measure()
+                 << ", front length " << surface.front_length() << " ("
+                 << n_points << " points, " << surface.fronts().size()
+                 << (surface.fronts().size() == 1 ? " front)" : " fronts)");
+          }
+        line << std::scientific << std::setprecision(4) << ", largest opening "
+             << opening;
+        pcout << line.str() << std::endl;
       }
-    else
-      {
-        unsigned int n_points = 0;
-        for (const auto &front : crack_surface.fronts())
-          n_points += front.size();
-        line << "  crack: area " << crack_surface.measure() << ", front length "
-             << crack_surface.front_length() << " (" << n_points << " points, "
-             << crack_surface.fronts().size()
-             << (crack_surface.fronts().size() == 1 ? " front)" : " fronts)");
-      }
-    line << std::scientific << std::setprecision(4) << ", largest opening "
-         << opening;
-    pcout << line.str() << std::endl;
+    statistics.add_value("crack_measure", measure);
+    statistics.add_value("front_length", front_length);
+    statistics.add_value("max_opening", largest_opening);
   }
 
 
@@ -304,7 +332,6 @@ namespace xcrack
       {
         make_enriched_dirichlet_constraints(dof_handler,
                                             *enrichment,
-                                            cracks[0],
                                             boundary_conditions,
                                             constraints);
         return;
@@ -473,8 +500,8 @@ namespace xcrack
     std::vector<double> lsn, lst;
     for (const unsigned int v : cell->vertex_indices())
       {
-        lsn.push_back(cracks[0].lsn(cell->vertex(v)));
-        lst.push_back(cracks[0].lst(cell->vertex(v)));
+        lsn.push_back(enrichment->crack_of(cell).lsn(cell->vertex(v)));
+        lst.push_back(enrichment->crack_of(cell).lst(cell->vertex(v)));
       }
     // Where the front crosses a 3D cell, four boxes per direction
     // (CellQuadrature::lip_rule; 2D tip cells are split exactly).
@@ -726,11 +753,15 @@ namespace xcrack
                                  "lst" + suffix);
       }
     data_out.build_patches(degree);
+    // crack-<cycle>.vtu for one crack, crack<i>-<cycle>.vtu for several.
     if (enrichment)
-      crack_surface.write_vtu(run_parameters.output_directory + "/crack-" +
-                                Utilities::int_to_string(cycle, 3) + ".vtu",
-                              dof_handler,
-                              solution);
+      for (unsigned int c = 0; c < crack_surfaces.size(); ++c)
+        crack_surfaces[c].write_vtu(
+          run_parameters.output_directory + "/crack" +
+            (cracks.size() > 1 ? std::to_string(c + 1) : "") + "-" +
+            Utilities::int_to_string(cycle, 3) + ".vtu",
+          dof_handler,
+          solution);
 
     const std::string  dir  = run_parameters.output_directory + "/";
     const std::string  base = "solution-" + Utilities::int_to_string(cycle, 3);
@@ -798,7 +829,12 @@ namespace xcrack
   ElasticityProblem<dim>::compute_fracture_parameters(const unsigned int cycle)
   {
     TimerOutput::Scope t(*timer, "fracture");
-    const auto        &fronts = crack_surface.fronts();
+    // The fronts of all cracks, numbered one after the other.
+    std::vector<std::vector<FrontPoint<dim>>> fronts;
+    for (const auto &surface : crack_surfaces)
+      fronts.insert(fronts.end(),
+                    surface.fronts().begin(),
+                    surface.fronts().end());
     if (fronts.empty())
       return;
 
@@ -827,7 +863,8 @@ namespace xcrack
                                          fronts,
                                          fe_values_of,
                                          boundary_conditions.lip_pressure.get(),
-                                         lips_of);
+                                         lips_of,
+                                         boundary_conditions.body_force.get());
 
     // The cross-check by the displacement jumps over the crown.
     std::vector<std::array<double, 3>> jump_k;

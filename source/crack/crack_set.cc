@@ -36,7 +36,11 @@ namespace xcrack
                         "0",
                         Patterns::Integer(0, max_cracks),
                         "Number of cracks, each described in its own "
-                        "subsection 'Crack <i>', i = 1, 2, ...");
+                        "subsection 'Crack <i>', i = 1, 2, ... Several "
+                        "cracks share the enriched space as long as their "
+                        "enriched zones stay at least a cell apart (no "
+                        "crossing or branching); the run stops with an "
+                        "error naming both cracks where they meet.");
       for (unsigned int i = 1; i <= max_cracks; ++i)
         {
           prm.enter_subsection("Crack " + std::to_string(i));

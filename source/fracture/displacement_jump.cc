@@ -34,7 +34,8 @@ namespace xcrack
     typename Triangulation<dim>::active_cell_iterator hint;
 
     // Per sample: the jump (3 components) and whether this rank found both
-    // sides; the first rank that did supplies the value.
+    // sides (in owned or ghost cells); the first rank that did supplies the
+    // value.
     constexpr unsigned int n = 4;
     std::vector<double>    local(n * n_samples, 0.);
     for (unsigned int k = 0; k < n_samples; ++k)
@@ -53,8 +54,10 @@ namespace xcrack
               {
                 const auto found_cell =
                   GridTools::find_active_cell_around_point(cache, x, hint);
+                // Ghost cells count: the two sides of a lip may belong to
+                // different ranks, and the solution is ghosted.
                 if (found_cell.first.state() != IteratorState::valid ||
-                    !found_cell.first->is_locally_owned())
+                    found_cell.first->is_artificial())
                   continue;
                 hint = found_cell.first;
                 const typename DoFHandler<dim>::active_cell_iterator cell(

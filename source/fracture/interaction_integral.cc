@@ -133,11 +133,13 @@ namespace xcrack
      * derivative of that frame along s, which makes the auxiliary fields of
      * a curved front compatible (see InteractionIntegral).
      *
-     * The frames of the points are interpolated linearly in s and
-     * re-orthonormalised (e2 first); their derivative is a central
-     * difference over @p step, a length a few cells long: the frames of the
-     * extracted points come from level-set gradients and vary from point to
-     * point by O(h), so the derivative must average over several segments.
+     * The frame at s (frame_at): e2 the normals of the points interpolated
+     * linearly in s, e3 the chord of the polyline over [s - step, s +
+     * step], e1 = e2 x e3; its derivative along s is a central difference
+     * over the same @p step, a length a few cells long (half the crown):
+     * the frames of the extracted points come from level-set gradients and
+     * tilt by O(h) from point to point, so the derivative must average over
+     * several segments.
      */
     template <int dim>
     class FrontCurve
@@ -453,7 +455,8 @@ namespace xcrack
     const std::vector<std::vector<FrontPoint<dim>>> &fronts,
     const FEValuesOf                                &fe_values_of,
     const Function<dim>                             *lip_pressure,
-    const LipsOf                                    &lips_of) const
+    const LipsOf                                    &lips_of,
+    const Function<dim>                             *body_force) const
   {
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
     const double   nu   = material.poisson_ratio;
@@ -549,6 +552,7 @@ namespace xcrack
             }
 
         std::vector<Tensor<2, dim>> grad_u;
+        Vector<double>              f_value(dim);
         // Per vertex: q e1 (made tangent to the boundary), psi_j(s).
         std::array<Tensor<1, dim>, n_vertices>      w_vertex;
         std::array<std::vector<double>, n_vertices> psi_vertex;
@@ -665,8 +669,9 @@ namespace xcrack
               return value;
             };
 
-            // Domain terms: where theta varies (2D: where q does).
-            if (dim == 3 || q_max > q_min)
+            // Domain terms: where theta varies (2D: where q does), and
+            // wherever theta is not zero under a body force.
+            if (dim == 3 || q_max > q_min || (body_force != nullptr))
               {
                 const FEValues<dim> &fe_values = fe_values_of(cell);
                 grad_u.resize(fe_values.n_quadrature_points);
@@ -735,6 +740,28 @@ namespace xcrack
                       for (unsigned int m = 0; m < n_integrals; ++m)
                         local[j * n_integrals + m] +=
                           scalar_product(T[m], grad_theta[j]) * JxW;
+
+                    // Body force: - int f_i u_i,k theta_k (u^aux for I).
+                    if (body_force != nullptr)
+                      {
+                        body_force->vector_value(x, f_value);
+                        Tensor<1, dim> f;
+                        for (unsigned int d = 0; d < dim; ++d)
+                          f[d] = f_value[d];
+                        Tensor<2, dim> du_aux[n_modes];
+                        for (unsigned int m = 0; m < n_modes; ++m)
+                          du_aux[m] =
+                            aux_gradient(aux[m], projection, xl, r, angle);
+                        for (const unsigned int j : active_tests)
+                          {
+                            const Tensor<1, dim> theta = theta_at(xi, j);
+                            for (unsigned int m = 0; m < n_modes; ++m)
+                              local[j * n_integrals + m] -=
+                                (f * (du_aux[m] * theta)) * JxW;
+                            local[j * n_integrals + n_modes] -=
+                              (f * (du * theta)) * JxW;
+                          }
+                      }
 
                     // Along a curved 3D front the auxiliary stress is not
                     // in equilibrium: + int div(sigma^aux)_i u_i,k theta_k.

@@ -187,7 +187,6 @@ namespace xcrack
   make_enriched_dirichlet_constraints(
     const DoFHandler<dim>         &dof_handler,
     const Enrichment<dim>         &enrichment,
-    const CrackGeometry<dim>      &crack,
     const BoundaryConditions<dim> &boundary_conditions,
     AffineConstraints<double>     &constraints)
   {
@@ -211,7 +210,8 @@ namespace xcrack
             const auto face = cell->face(f);
             if (!face->at_boundary())
               continue;
-            const auto bc =
+            const CrackGeometry<dim> &crack = enrichment.crack_of(cell);
+            const auto                bc =
               boundary_conditions.dirichlet.find(face->boundary_id());
             if (bc == boundary_conditions.dirichlet.end())
               continue;
@@ -323,7 +323,7 @@ namespace xcrack
                           continue;
                         node.enriched.push_back(a);
                         node.functions.push_back(
-                          enrichment.enrichment_function(fe, j));
+                          enrichment.enrichment_function(cell, j));
                         node.branches =
                           node.branches ||
                           dynamic_cast<const BranchFunction<dim> *>(
@@ -406,13 +406,11 @@ namespace xcrack
   template void
   make_enriched_dirichlet_constraints<2>(const DoFHandler<2> &,
                                          const Enrichment<2> &,
-                                         const CrackGeometry<2> &,
                                          const BoundaryConditions<2> &,
                                          AffineConstraints<double> &);
   template void
   make_enriched_dirichlet_constraints<3>(const DoFHandler<3> &,
                                          const Enrichment<3> &,
-                                         const CrackGeometry<3> &,
                                          const BoundaryConditions<3> &,
                                          AffineConstraints<double> &);
 } // namespace xcrack

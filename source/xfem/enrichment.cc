@@ -133,33 +133,54 @@ namespace xcrack
 
 
   template <int dim>
-  Enrichment<dim>::Enrichment(const CrackGeometry<dim>   &crack,
-                              const unsigned int          degree,
-                              const EnrichmentParameters &parameters)
-    : crack(crack)
+  Enrichment<dim>::Enrichment(
+    const std::vector<const CrackGeometry<dim> *> &cracks,
+    const unsigned int                             degree,
+    const EnrichmentParameters                    &parameters)
+    : cracks(cracks)
     , parameters(parameters)
     , assembly_points_1d(degree + 1)
-    , heaviside_function(crack)
   {
-    for (unsigned int k = 0; k < BranchFunction<dim>::n_functions; ++k)
+    check_input(!cracks.empty(), "Enrichment: there is no crack to enrich.");
+    check_input(cracks.size() < invalid_crack,
+                "Cracks/Number of cracks: at most " +
+                  std::to_string(invalid_crack - 1) + " cracks.");
+    check_input(!parameters.gather || cracks.size() == 1,
+                "Enrichment/Gather tip DoFs = true needs a single crack "
+                "(Cracks/Number of cracks = " +
+                  std::to_string(cracks.size()) + ").");
+    branch_functions.resize(cracks.size());
+    for (unsigned int c = 0; c < cracks.size(); ++c)
       {
-        branch_functions.push_back(
-          std::make_unique<BranchFunction<dim>>(crack, k));
-        // Gathered DoFs carry F chi over the whole zone (see the class
-        // documentation); chi falls from 1 at half the radius to 0 at it.
-        if (parameters.gather)
-          branch_functions.back()->set_cutoff(0.5 * parameters.radius,
-                                              parameters.radius);
+        heaviside_functions.push_back(
+          std::make_unique<HeavisideFunction<dim>>(*cracks[c]));
+        for (unsigned int k = 0; k < BranchFunction<dim>::n_functions; ++k)
+          {
+            branch_functions[c].push_back(
+              std::make_unique<BranchFunction<dim>>(*cracks[c], k));
+            // Gathered DoFs carry F chi over the whole zone (see the class
+            // documentation); chi falls from 1 at half the radius to 0 at
+            // it.
+            if (parameters.gather)
+              branch_functions[c].back()->set_cutoff(0.5 * parameters.radius,
+                                                     parameters.radius);
+          }
       }
 
+    // Each cell evaluates the functions of its own crack (crack_index()).
     using Cell = typename Triangulation<dim>::cell_iterator;
     using EnrichmentFunction =
       std::function<const Function<dim> *(const Cell &)>;
-    const std::vector<EnrichmentFunction> jump = {
-      [this](const Cell &) { return &heaviside_function; }};
-    std::vector<EnrichmentFunction> branches;
-    for (const auto &f : branch_functions)
-      branches.push_back([f = f.get()](const Cell &) { return f; });
+    const std::vector<EnrichmentFunction> jump = {[this](const Cell &cell) {
+      return static_cast<const Function<dim> *>(
+        heaviside_functions[crack_index(cell)].get());
+    }};
+    std::vector<EnrichmentFunction>       branches;
+    for (unsigned int k = 0; k < BranchFunction<dim>::n_functions; ++k)
+      branches.push_back([this, k](const Cell &cell) {
+        return static_cast<const Function<dim> *>(
+          branch_functions[crack_index(cell)][k].get());
+      });
 
     const FE_Q<dim>       standard(degree), linear(1);
     const FE_Nothing<dim> nothing(1, /*dominate=*/true);
@@ -176,6 +197,39 @@ namespace xcrack
                              &nothing},
             {jump, branches}),
           dim));
+  }
+
+
+
+  template <int dim>
+  Enrichment<dim>::Enrichment(const CrackGeometry<dim>   &crack,
+                              const unsigned int          degree,
+                              const EnrichmentParameters &parameters)
+    : Enrichment(std::vector<const CrackGeometry<dim> *>{&crack},
+                 degree,
+                 parameters)
+  {}
+
+
+
+  template <int dim>
+  unsigned int
+  Enrichment<dim>::crack_index(
+    const typename Triangulation<dim>::cell_iterator &cell) const
+  {
+    if (!cell->is_active() || cell->active_cell_index() >= cell_crack.size())
+      return 0;
+    return cell_crack[cell->active_cell_index()];
+  }
+
+
+
+  template <int dim>
+  const CrackGeometry<dim> &
+  Enrichment<dim>::crack_of(
+    const typename Triangulation<dim>::cell_iterator &cell) const
+  {
+    return *cracks[crack_index(cell)];
   }
 
 
@@ -242,26 +296,31 @@ namespace xcrack
   std::vector<double>
   Enrichment<dim>::vertex_values(
     const typename Triangulation<dim>::cell_iterator &cell,
+    const unsigned int                                c,
     const bool                                        normal) const
   {
     std::vector<double> values;
     for (const unsigned int v : cell->vertex_indices())
-      values.push_back(normal ? crack.lsn(cell->vertex(v)) :
-                                crack.lst(cell->vertex(v)));
+      values.push_back(normal ? cracks[c]->lsn(cell->vertex(v)) :
+                                cracks[c]->lst(cell->vertex(v)));
     return values;
   }
 
 
 
   template <int dim>
-  void
-  Enrichment<dim>::set_fe_indices(DoFHandler<dim> &dof_handler)
+  typename Enrichment<dim>::CrackZone
+  Enrichment<dim>::classify(const Triangulation<dim> &tria,
+                            const unsigned int        c) const
   {
-    const Triangulation<dim> &tria = dof_handler.get_triangulation();
+    const CrackGeometry<dim> &crack = *cracks[c];
+    CrackZone                 zone;
+    auto                     &cell_kind      = zone.cell_kind;
+    auto                     &fraction_minus = zone.fraction_minus;
+    auto                     &near_front     = zone.near_front;
     cell_kind.assign(tria.n_active_cells(), CellKind::plain);
     fraction_minus.assign(tria.n_active_cells(), 0.);
     near_front.assign(tria.n_active_cells(), false);
-    special_rules.clear();
     const bool with_tips =
       parameters.tip_zone != EnrichmentParameters::TipZone::none;
 
@@ -276,8 +335,8 @@ namespace xcrack
     for (const auto &cell : tria.active_cell_iterators())
       if (!cell->is_artificial())
         {
-          const std::vector<double> lsn = vertex_values(cell, true);
-          const std::vector<double> lst = vertex_values(cell, false);
+          const std::vector<double> lsn = vertex_values(cell, c, true);
+          const std::vector<double> lst = vertex_values(cell, c, false);
           const auto [min_lsn, max_lsn] =
             std::minmax_element(lsn.begin(), lsn.end());
           const auto [min_lst, max_lst] =
@@ -357,7 +416,7 @@ namespace xcrack
                                                                  v) *
                       cell->vertex(v);
                   total += rule.weight(q);
-                  if (heaviside_function.value(x) < 0)
+                  if (crack.lsn(x) < 0)
                     minus += rule.weight(q);
                 }
               minus /= total;
@@ -422,6 +481,8 @@ namespace xcrack
 
     // The vertices whose shape functions are enriched. The tip zone is
     // decided from the vertices' own positions, the same on every rank.
+    auto &tip_vertex       = zone.tip_vertex;
+    auto &heaviside_vertex = zone.heaviside_vertex;
     tip_vertex.assign(tria.n_vertices(), false);
     heaviside_vertex.assign(tria.n_vertices(), false);
     std::vector<bool> vertex_seen(tria.n_vertices(), false);
@@ -461,6 +522,86 @@ namespace xcrack
     // The owners of the ghost cells see their vertices' full supports.
     import_ghost_vertex_flags(tria, heaviside_vertex, /*overwrite=*/true);
     import_ghost_vertex_flags(tria, tip_vertex, /*overwrite=*/true);
+    return zone;
+  }
+
+
+
+  template <int dim>
+  void
+  Enrichment<dim>::set_fe_indices(DoFHandler<dim> &dof_handler)
+  {
+    const Triangulation<dim> &tria = dof_handler.get_triangulation();
+    special_rules.clear();
+    cell_kind.assign(tria.n_active_cells(), CellKind::plain);
+    near_front.assign(tria.n_active_cells(), false);
+    cell_crack.assign(tria.n_active_cells(), 0);
+    fraction_minus.assign(cracks.size(), {});
+    heaviside_vertex.assign(tria.n_vertices(), false);
+    tip_vertex.assign(tria.n_vertices(), false);
+    vertex_crack.assign(tria.n_vertices(), invalid_crack);
+
+    // Where the zones of two cracks meet, one cell would need the functions
+    // of both: note the first such place on this rank (all ranks stop
+    // together below).
+    std::string clash;
+    const auto  note_clash =
+      [&](const unsigned int a, const unsigned int b, const Point<dim> &x) {
+        if (!clash.empty())
+          return;
+        std::ostringstream message;
+        message << "Cracks/Crack " << std::min(a, b) + 1 << " and Crack "
+                << std::max(a, b) + 1 << ": their enriched zones meet near ("
+                << x
+                << "), where a cell would need the functions of both "
+                   "cracks (crossing or branching cracks, or cracks less "
+                   "than about two cells apart, are not supported). Refine "
+                   "the mesh between them"
+                << (parameters.tip_zone ==
+                        EnrichmentParameters::TipZone::geometric ?
+                      " or reduce Enrichment/Enrichment radius." :
+                      ".");
+        clash = message.str();
+      };
+
+    // Each crack claims the cells it cuts or whose front it holds (their
+    // rules and functions follow its level sets) and the vertices it
+    // enriches. Being near a front is a weaker claim: it only refines the
+    // quadrature, and a cell near two fronts that neither enriches can use
+    // either's rule.
+    std::vector<unsigned char> claimed(tria.n_active_cells(), invalid_crack);
+    std::vector<std::vector<bool>>     near_crack(cracks.size());
+    std::vector<std::vector<CellKind>> kind_of_crack(cracks.size());
+    for (unsigned int c = 0; c < cracks.size(); ++c)
+      {
+        CrackZone zone    = classify(tria, c);
+        fraction_minus[c] = std::move(zone.fraction_minus);
+        near_crack[c]     = std::move(zone.near_front);
+        kind_of_crack[c]  = std::move(zone.cell_kind);
+        for (const auto &cell : tria.active_cell_iterators())
+          if (!cell->is_artificial())
+            {
+              const unsigned int i = cell->active_cell_index();
+              if (kind_of_crack[c][i] == CellKind::plain)
+                continue;
+              if (claimed[i] != invalid_crack)
+                note_clash(claimed[i], c, cell->center());
+              else
+                claimed[i] = c;
+            }
+        for (unsigned int v = 0; v < tria.n_vertices(); ++v)
+          if (zone.heaviside_vertex[v] || zone.tip_vertex[v])
+            {
+              if (vertex_crack[v] != invalid_crack)
+                {
+                  note_clash(vertex_crack[v], c, tria.get_vertices()[v]);
+                  continue;
+                }
+              vertex_crack[v]     = c;
+              heaviside_vertex[v] = zone.heaviside_vertex[v];
+              tip_vertex[v]       = zone.tip_vertex[v];
+            }
+      }
 
     // A hanging vertex takes its values from the vertices of the coarse
     // line or face it lies on: where one of those is enriched, so is the
@@ -497,19 +638,61 @@ namespace xcrack
     };
     const std::vector<bool> jump_influenced   = influence(heaviside_vertex);
     const std::vector<bool> branch_influenced = influence(tip_vertex);
+    // The crack of each influenced vertex (a hanging vertex takes that of
+    // the coarse vertices it depends on).
+    std::vector<unsigned char> influencing_crack(tria.n_vertices(),
+                                                 invalid_crack);
+    for (unsigned int c = 0; c < cracks.size(); ++c)
+      {
+        std::vector<bool> of_crack(tria.n_vertices(), false);
+        for (unsigned int v = 0; v < tria.n_vertices(); ++v)
+          of_crack[v] = (vertex_crack[v] == c);
+        const std::vector<bool> influenced = influence(of_crack);
+        for (unsigned int v = 0; v < tria.n_vertices(); ++v)
+          if (influenced[v])
+            {
+              if (influencing_crack[v] != invalid_crack &&
+                  influencing_crack[v] != c)
+                note_clash(influencing_crack[v], c, tria.get_vertices()[v]);
+              influencing_crack[v] = c;
+            }
+      }
 
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+      if (!cell->is_artificial())
         {
-          bool jump = false, branches = false;
+          const unsigned int i     = cell->active_cell_index();
+          unsigned char      crack = claimed[i];
+          bool               jump = false, branches = false;
           for (const unsigned int v : cell->vertex_indices())
             {
-              jump     = jump || jump_influenced[cell->vertex_index(v)];
-              branches = branches || branch_influenced[cell->vertex_index(v)];
+              const unsigned int index  = cell->vertex_index(v);
+              jump                      = jump || jump_influenced[index];
+              branches                  = branches || branch_influenced[index];
+              const unsigned char other = influencing_crack[index];
+              if (other == invalid_crack)
+                continue;
+              if (crack == invalid_crack)
+                crack = other;
+              else if (other != crack)
+                note_clash(crack, other, cell->center());
             }
-          cell->set_active_fe_index((jump ? heaviside : plain) +
-                                    (branches ? tip : plain));
+          for (unsigned int c = 0; c < cracks.size() && crack == invalid_crack;
+               ++c)
+            if (near_crack[c][i])
+              crack = c;
+          cell_crack[i] = (crack == invalid_crack ? 0 : crack);
+          cell_kind[i]  = kind_of_crack[cell_crack[i]][i];
+          near_front[i] = near_crack[cell_crack[i]][i];
+          if (cell->is_locally_owned())
+            cell->set_active_fe_index((jump ? heaviside : plain) +
+                                      (branches ? tip : plain));
         }
+
+    // Stop on every rank, with the first clash any rank found.
+    for (const std::string &message :
+         Utilities::MPI::all_gather(tria.get_communicator(), clash))
+      check_input(message.empty(), message);
   }
 
 
@@ -541,20 +724,23 @@ namespace xcrack
 
   template <int dim>
   const Function<dim> *
-  Enrichment<dim>::enrichment_function(const FiniteElement<dim> &fe,
-                                       const unsigned int        i) const
+  Enrichment<dim>::enrichment_function(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const unsigned int                                    i) const
   {
-    const auto &index = fe.system_to_base_index(i);
-    const auto &inner =
+    const FiniteElement<dim> &fe    = cell->get_fe();
+    const unsigned int        c     = crack_index(cell);
+    const auto               &index = fe.system_to_base_index(i);
+    const auto               &inner =
       fe.base_element(index.first.first).system_to_base_index(index.second);
     switch (inner.first.first)
       {
         case 0:
           return nullptr;
         case 1:
-          return &heaviside_function;
+          return heaviside_functions[c].get();
         default:
-          return branch_functions[inner.first.second].get();
+          return branch_functions[c][inner.first.second].get();
       }
   }
 
@@ -646,16 +832,17 @@ namespace xcrack
           dofs.resize(cell->get_fe().n_dofs_per_cell());
           cell->get_dof_indices(dofs);
           const CellKind kind = cell_kind[cell->active_cell_index()];
+          const double   minus =
+            fraction_minus[cell_crack[cell->active_cell_index()]]
+                          [cell->active_cell_index()];
           for (unsigned int i = 0; i < dofs.size(); ++i)
             if (is_enriched_dof(cell->get_fe(), i))
               {
                 auto &s = support[dofs[i]];
                 s.split = s.split || kind == CellKind::split;
                 s.tip   = s.tip || kind == CellKind::tip;
-                s.minus +=
-                  fraction_minus[cell->active_cell_index()] * cell->measure();
-                s.plus += (1 - fraction_minus[cell->active_cell_index()]) *
-                          cell->measure();
+                s.minus += minus * cell->measure();
+                s.plus += (1 - minus) * cell->measure();
               }
         }
 
@@ -771,13 +958,15 @@ namespace xcrack
     if (it != special_rules.end())
       return &it->second;
 
-    const std::vector<double> lsn = vertex_values(cell, true);
+    const unsigned int        c   = crack_index(cell);
+    const std::vector<double> lsn = vertex_values(cell, c, true);
     Quadrature<dim>           rule;
     if (kind == CellKind::split && !near)
       rule = CellQuadrature::cut_cell_rule<dim>(lsn, n).first;
     else
-      rule =
-        CellQuadrature::tip_cell_rule<dim>(lsn, vertex_values(cell, false), n);
+      rule = CellQuadrature::tip_cell_rule<dim>(lsn,
+                                                vertex_values(cell, c, false),
+                                                n);
     return &special_rules.emplace(key, std::move(rule)).first->second;
   }
 

@@ -51,6 +51,16 @@ expect_error no_support "Pinned points are empty" < <(printf 'set Dimension = 2\
 [ $? -eq 1 ] && grep -q "Cannot open the parameter file 'does_not_exist.prm'" nofile.log ||
   fail "missing parameter file"
 
+# Two cracks on an 8 x 8 mesh (both resolved by the first mesh).
+two_cracks() {
+  sed 's/set Subdivisions = 2, 2/set Subdivisions = 8, 8/' valid.prm
+  printf 'subsection Cracks\n  set Number of cracks = 2\n'
+  printf '  subsection Crack 1\n    set Start point = 0.1, 0.45\n    set End point = 0.4, 0.45\n  end\n'
+  printf '  subsection Crack 2\n    set Start point = %s\n    set End point = %s\n  end\nend\n' "$1" "$2"
+}
+expect_error cracks_too_close "Cracks/Crack 1 and Crack 2: their enriched zones meet near" \
+  < <(two_cracks "0.6, 0.45" "0.9, 0.45")
+
 [ "$snapshot" = "$(cd out && ls -l --time-style=full-iso && md5sum ./*)" ] ||
   fail "a failed start changed the earlier results in out/"
 

@@ -114,7 +114,10 @@ namespace xcrack
    * of the front nearest to x, r and the angle from e1 in the plane (e1,
    * e2) (plane strain fields, their curvature terms neglected: the error
    * vanishes with the crown). The lip term is there when the lips carry a
-   * pressure.
+   * pressure. A body force f adds - int_V f_i u_i,k theta_k dV to G and
+   * - int_V f_i u^aux_i,k theta_k dV to I (the divergence of the energy
+   * momentum tensor is no longer zero where f acts), over the whole
+   * support of theta, also where q = 1.
    *
    * theta_j = psi_j(s) q(r) e1(s), with q = 1 within r_inf of the front, 0
    * beyond r_sup, is interpolated on the Q1 hats of the mesh (its gradient
@@ -149,7 +152,8 @@ namespace xcrack
      * BENCHMARKS.md, a closed front repeating its first point at the end;
      * a 2D tip is a front of one point) from the ghosted @p solution on
      * @p dof_handler, at the nodes of each front's FrontBasis.
-     * @p lip_pressure may be null. Collective.
+     * @p lip_pressure and @p body_force (dim components) may be null.
+     * Collective.
      */
     std::vector<FrontValues<dim>>
     compute(const DoFHandler<dim>                           &dof_handler,
@@ -157,7 +161,8 @@ namespace xcrack
             const std::vector<std::vector<FrontPoint<dim>>> &fronts,
             const FEValuesOf                                &fe_values_of,
             const Function<dim>                             *lip_pressure,
-            const LipsOf                                    &lips_of) const;
+            const LipsOf                                    &lips_of,
+            const Function<dim> *body_force = nullptr) const;
 
   private:
     const FractureParameters &parameters;

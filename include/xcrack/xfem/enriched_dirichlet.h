@@ -43,7 +43,6 @@ namespace xcrack
   make_enriched_dirichlet_constraints(
     const DoFHandler<dim>         &dof_handler,
     const Enrichment<dim>         &enrichment,
-    const CrackGeometry<dim>      &crack,
     const BoundaryConditions<dim> &boundary_conditions,
     AffineConstraints<double>     &constraints);
 } // namespace xcrack

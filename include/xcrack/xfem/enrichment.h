@@ -128,8 +128,19 @@ namespace xcrack
    * zone carries F_k itself (times a partition of unity that is one inside
    * it) at the cost of 4 x dim unknowns.
    *
-   * Not yet: gathering in 3D (per front segment) and on several ranks,
-   * shifted enrichment, several cracks, fit to vertex.
+   * Several cracks share the four FE indices: each cell evaluates the
+   * functions of one crack (crack_of()), the one whose cut, front or
+   * enriched nodes it holds. This is the "colouring" of enrichment zones
+   * that Code_Aster and deal.II's ColorEnriched use: it is exact as long as
+   * no cell needs the functions of two cracks, i.e. the enriched zones of
+   * different cracks are at least one cell apart. Where they meet,
+   * set_fe_indices() stops with an InputError naming both cracks and the
+   * place (on every rank), rather than silently dropping one crack's
+   * functions; refining between the cracks separates the zones.
+   *
+   * Not yet: gathering in 3D (per front segment), on several ranks and with
+   * several cracks; shifted enrichment; fit to vertex; crossing or
+   * branching cracks (overlapping zones).
    */
   template <int dim>
   class Enrichment
@@ -139,8 +150,18 @@ namespace xcrack
     static constexpr unsigned int heaviside = 1;
     static constexpr unsigned int tip       = 2;
     static constexpr unsigned int both      = 3;
+    /// No crack (cell_crack, vertex_crack): cracks are numbered below it.
+    static constexpr unsigned char invalid_crack = 255;
 
-    /// Enrich the displacement space of degree @p degree by @p crack.
+    /**
+     * Enrich the displacement space of degree @p degree by @p cracks (not
+     * owned; they must outlive this object). Gathering needs one crack.
+     */
+    Enrichment(const std::vector<const CrackGeometry<dim> *> &cracks,
+               const unsigned int                             degree,
+               const EnrichmentParameters                    &parameters);
+
+    /// Enrich by the one crack @p crack.
     Enrichment(const CrackGeometry<dim>   &crack,
                const unsigned int          degree,
                const EnrichmentParameters &parameters);
@@ -173,11 +194,25 @@ namespace xcrack
 
     /**
      * The function that multiplies the shape function of local DoF @p i of
-     * @p fe: H or one of F1..F4; nullptr for a standard DoF.
+     * @p cell's element: H or one of F1..F4 of the cell's crack; nullptr
+     * for a standard DoF.
      */
     const Function<dim> *
-    enrichment_function(const FiniteElement<dim> &fe,
-                        const unsigned int        i) const;
+    enrichment_function(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      const unsigned int                                    i) const;
+
+    /**
+     * The index of the crack whose functions @p cell evaluates (0 for a
+     * cell no crack enriches). Valid after set_fe_indices() for owned and
+     * ghost cells.
+     */
+    unsigned int
+    crack_index(const typename Triangulation<dim>::cell_iterator &cell) const;
+
+    /// The crack whose functions @p cell evaluates (see crack_index()).
+    const CrackGeometry<dim> &
+    crack_of(const typename Triangulation<dim>::cell_iterator &cell) const;
 
     /// Whether @p cell is split by the crack (and has a special rule).
     bool
@@ -230,26 +265,49 @@ namespace xcrack
     static unsigned int
     slot(const FiniteElement<dim> &fe, const unsigned int i);
 
+    /// lsn (@p normal) or lst of crack @p c at the vertices of @p cell.
     std::vector<double>
     vertex_values(const typename Triangulation<dim>::cell_iterator &cell,
+                  const unsigned int                                c,
                   const bool normal) const;
 
-    const CrackGeometry<dim>  &crack;
-    const EnrichmentParameters parameters;
+    /// Classification of the cells and vertices by one crack.
+    struct CrackZone
+    {
+      std::vector<CellKind> cell_kind;
+      std::vector<double>   fraction_minus;
+      std::vector<bool>     near_front;
+      std::vector<bool>     heaviside_vertex;
+      std::vector<bool>     tip_vertex;
+    };
+
+    /// Classify the cells and vertices of @p tria by crack @p c alone.
+    CrackZone
+    classify(const Triangulation<dim> &tria, const unsigned int c) const;
+
+    const std::vector<const CrackGeometry<dim> *> cracks;
+    const EnrichmentParameters                    parameters;
     /// Gauss points per direction of the assembly's rules (degree + 1).
-    const unsigned int                                assembly_points_1d;
-    HeavisideFunction<dim>                            heaviside_function;
-    std::vector<std::unique_ptr<BranchFunction<dim>>> branch_functions;
-    hp::FECollection<dim>                             fe_collection;
-    std::vector<CellKind>                             cell_kind;
-    /// Fraction of each cell's volume on the negative side of the crack.
-    std::vector<double> fraction_minus;
+    const unsigned int                                   assembly_points_1d;
+    std::vector<std::unique_ptr<HeavisideFunction<dim>>> heaviside_functions;
+    /// branch_functions[crack][k] = F_{k+1} of that crack.
+    std::vector<std::vector<std::unique_ptr<BranchFunction<dim>>>>
+                          branch_functions;
+    hp::FECollection<dim> fe_collection;
+    std::vector<CellKind> cell_kind;
+    /// The crack each cell evaluates (crack_index()).
+    std::vector<unsigned char> cell_crack;
+    /// Fraction of each cell's volume on the negative side of each crack
+    /// ([crack][cell]).
+    std::vector<std::vector<double>> fraction_minus;
     /// Cells the front does not touch but passes within a diameter of.
     std::vector<bool> near_front;
     /// Whether the functions of each vertex are enriched by H, by F1..F4
     /// (vertices of the owned and ghost cells).
-    std::vector<bool>                               heaviside_vertex;
-    std::vector<bool>                               tip_vertex;
+    std::vector<bool> heaviside_vertex;
+    std::vector<bool> tip_vertex;
+    /// The crack of each enriched vertex.
+    std::vector<unsigned char>                      vertex_crack;
     mutable std::map<unsigned int, Quadrature<dim>> special_rules;
   };
 } // namespace xcrack
