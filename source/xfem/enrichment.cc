@@ -15,7 +15,9 @@
 #include <xcrack/xfem/enrichment.h>
 
 #include <algorithm>
+#include <array>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <set>
 #include <sstream>
@@ -288,6 +290,67 @@ namespace xcrack
               flags[cell->vertex_index(v)] = true;
         });
     }
+
+
+    /**
+     * Sum over the ranks the per-vertex volumes @p plus and @p minus that
+     * each rank measured on its owned cells (coarse vertices including the
+     * cells of their hanging neighbours): the cells a function reaches
+     * need not all be owned or ghost on any one rank, and ranks that judged
+     * a vertex from different parts of its support made different choices
+     * (a rigid split lost on two ranks). Only vertices within ten cell
+     * sizes (@p cell_size, the largest owned cell counted) of the crack
+     * surface (|lsn| and lst) take part: every vertex the volume criterion
+     * judges lies within about eight cell sizes of a cell the crack
+     * splits. They are matched by their coordinates, the same on every
+     * rank.
+     */
+    template <int dim>
+    void
+    sum_over_ranks(const Triangulation<dim>  &tria,
+                   const CrackGeometry<dim>  &crack,
+                   const std::vector<double> &cell_size,
+                   std::vector<double>       &plus,
+                   std::vector<double>       &minus)
+    {
+      if (dynamic_cast<const parallel::TriangulationBase<dim> *>(&tria) ==
+          nullptr)
+        return;
+      std::vector<double> mine;
+      for (unsigned int v = 0; v < tria.n_vertices(); ++v)
+        if (cell_size[v] > 0 &&
+            std::abs(crack.lsn(tria.get_vertices()[v])) <= 10 * cell_size[v] &&
+            crack.lst(tria.get_vertices()[v]) <= 10 * cell_size[v])
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              mine.push_back(tria.get_vertices()[v][d]);
+            mine.push_back(plus[v]);
+            mine.push_back(minus[v]);
+          }
+      std::map<std::array<double, dim>, std::pair<double, double>> total;
+      for (const auto &rank :
+           Utilities::MPI::all_gather(tria.get_communicator(), mine))
+        for (unsigned int i = 0; i + dim + 2 <= rank.size(); i += dim + 2)
+          {
+            std::array<double, dim> x;
+            for (unsigned int d = 0; d < dim; ++d)
+              x[d] = rank[i + d];
+            total[x].first += rank[i + dim];
+            total[x].second += rank[i + dim + 1];
+          }
+      for (unsigned int v = 0; v < tria.n_vertices(); ++v)
+        {
+          std::array<double, dim> x;
+          for (unsigned int d = 0; d < dim; ++d)
+            x[d] = tria.get_vertices()[v][d];
+          const auto it = total.find(x);
+          if (it != total.end())
+            {
+              plus[v]  = it->second.first;
+              minus[v] = it->second.second;
+            }
+        }
+    }
   } // namespace
 
 
@@ -326,11 +389,10 @@ namespace xcrack
 
     std::vector<bool> touches_split(tria.n_vertices(), false);
     std::vector<bool> touches_tip(tria.n_vertices(), false);
-    // Volume of the support of each vertex's function on each side of the
-    // crack, and whether a cell the crack splits touches it directly.
+    // Volume of each vertex's cells on each side of the crack.
     std::vector<double> volume_plus(tria.n_vertices(), 0.);
     std::vector<double> volume_minus(tria.n_vertices(), 0.);
-    std::vector<bool>   directly_split(tria.n_vertices(), false);
+    std::vector<double> largest_cell(tria.n_vertices(), 0.);
     std::vector<bool>   gathered_zone(tria.n_vertices(), false);
     for (const auto &cell : tria.active_cell_iterators())
       if (!cell->is_artificial())
@@ -421,29 +483,22 @@ namespace xcrack
                 }
               minus /= total;
             }
-          if (kind == CellKind::plain)
-            {
-              fraction_minus[cell->active_cell_index()] = minus;
-              for (const unsigned int v : cell->vertex_indices())
-                {
-                  volume_minus[cell->vertex_index(v)] +=
-                    minus * cell->measure();
-                  volume_plus[cell->vertex_index(v)] +=
-                    (1 - minus) * cell->measure();
-                }
-              continue;
-            }
           fraction_minus[cell->active_cell_index()] = minus;
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              const unsigned int index = cell->vertex_index(v);
-              (kind == CellKind::split ? touches_split : touches_tip)[index] =
+          // Volumes from owned cells only: summed over the ranks below.
+          if (cell->is_locally_owned())
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                const unsigned int index = cell->vertex_index(v);
+                volume_minus[index] += minus * cell->measure();
+                volume_plus[index] += (1 - minus) * cell->measure();
+                largest_cell[index] =
+                  std::max(largest_cell[index], cell->diameter());
+              }
+          if (kind != CellKind::plain)
+            for (const unsigned int v : cell->vertex_indices())
+              (kind == CellKind::split ? touches_split :
+                                         touches_tip)[cell->vertex_index(v)] =
                 true;
-              directly_split[index] =
-                directly_split[index] || kind == CellKind::split;
-              volume_minus[index] += minus * cell->measure();
-              volume_plus[index] += (1 - minus) * cell->measure();
-            }
         }
 
     import_ghost_vertex_flags(tria, touches_split);
@@ -479,6 +534,39 @@ namespace xcrack
                   pull(face, face->child(0)->vertex_index(3));
           }
 
+    // The same holds for the volume criterion below: the function of a
+    // coarse vertex reaches the cells of its hanging neighbours, and a
+    // sliver it holds there is as dangerous as one in its own cells (each
+    // refined line or face once).
+    std::vector<double> reach_plus = volume_plus, reach_minus = volume_minus;
+    std::vector<double> reach_cell = largest_cell;
+    {
+      std::set<unsigned int> lines_seen, faces_seen;
+      const auto reach = [&](const auto &object, const unsigned int h) {
+        for (const unsigned int v : object->vertex_indices())
+          {
+            reach_plus[object->vertex_index(v)] += volume_plus[h];
+            reach_minus[object->vertex_index(v)] += volume_minus[h];
+            reach_cell[object->vertex_index(v)] =
+              std::max(reach_cell[object->vertex_index(v)], largest_cell[h]);
+          }
+      };
+      for (const auto &cell : tria.active_cell_iterators())
+        if (!cell->is_artificial())
+          {
+            for (unsigned int l = 0; l < cell->n_lines(); ++l)
+              if (cell->line(l)->has_children() &&
+                  lines_seen.insert(cell->line(l)->index()).second)
+                reach(cell->line(l), cell->line(l)->child(0)->vertex_index(1));
+            if (dim == 3)
+              for (const auto &face : cell->face_iterators())
+                if (face->has_children() &&
+                    faces_seen.insert(face->index()).second)
+                  reach(face, face->child(0)->vertex_index(3));
+          }
+    }
+    sum_over_ranks(tria, crack, reach_cell, reach_plus, reach_minus);
+
     // The vertices whose shape functions are enriched. The tip zone is
     // decided from the vertices' own positions, the same on every rank.
     auto &tip_vertex       = zone.tip_vertex;
@@ -511,11 +599,11 @@ namespace xcrack
                                       (!tip_vertex[index] || parameters.gather);
             // A support the crack barely cuts gives a function that is almost
             // a copy of the standard one, and a nearly singular matrix: drop
-            // it. (A vertex that only reaches split cells through hanging-node
-            // constraints has no split cell of its own; it is kept.)
-            const double total = volume_plus[index] + volume_minus[index];
-            if (heaviside_vertex[index] && directly_split[index] &&
-                std::min(volume_plus[index], volume_minus[index]) <=
+            // it. The support is what the function reaches, its own cells and
+            // those of its hanging neighbours.
+            const double total = reach_plus[index] + reach_minus[index];
+            if (heaviside_vertex[index] &&
+                std::min(reach_plus[index], reach_minus[index]) <=
                   parameters.heaviside_volume_tolerance * total)
               heaviside_vertex[index] = false;
           }

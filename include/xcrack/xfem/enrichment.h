@@ -111,7 +111,16 @@ namespace xcrack
    * A node is tip-enriched if it is a vertex of a tip cell or (geometric
    * zone) lies within the enrichment radius of the front, r = sqrt(lsn^2 +
    * lst^2) <= radius. It is Heaviside-enriched if its support contains a
-   * split cell and it is neither tip-enriched nor a vertex of a tip cell.
+   * split cell and it is neither tip-enriched nor a vertex of a tip cell,
+   * unless the smaller side of the crack holds at most `Heaviside volume
+   * tolerance` of that support, N_j H then being almost a copy of N_j. The
+   * support counts what the function reaches: the vertex's cells and,
+   * through the hanging-node constraints, those of its hanging neighbours;
+   * the sides are measured with the rule the assembly uses (near the front
+   * the tip rule, which need not see a thin sliver of the exact cut). Both
+   * were needed on tilted 3D fronts through refined meshes, where a
+   * function kept for a sliver only a constraint reached made the matrix
+   * singular.
    * The enriched DoFs of cells with an enriched element that are not
    * enriched are constrained to zero: an unconstrained N_j H with H constant
    * on supp N_j would copy N_j and make the matrix singular.
