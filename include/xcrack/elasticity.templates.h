@@ -140,12 +140,14 @@ namespace xcrack
         enrichment = std::make_unique<Enrichment<dim>>(crack_list,
                                                        degree,
                                                        enrichment_parameters);
-        // Classify the coarse mesh once now: cracks whose enriched zones
-        // meet stop the run here, before any result is written.
-        {
-          DoFHandler<dim> probe(triangulation);
-          enrichment->set_fe_indices(probe);
-        }
+        // Several cracks: classify the coarse mesh once now, so that
+        // cracks whose enriched zones meet stop the run here, before any
+        // result is written.
+        if (cracks.size() > 1)
+          {
+            DoFHandler<dim> probe(triangulation);
+            enrichment->set_fe_indices(probe);
+          }
         // Gauss rules per element: the cells of the tip zone carry the
         // non-polynomial branch functions and get two more points.
         for (const auto &fe : enrichment->get_fe_collection())

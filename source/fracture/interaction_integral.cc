@@ -719,15 +719,16 @@ namespace xcrack
 
                     // T_kj with I = int T_kj theta_k,j.
                     Tensor<2, dim> T[n_integrals];
+                    Tensor<2, dim> du_aux[n_modes];
                     for (unsigned int m = 0; m < n_modes; ++m)
                       {
-                        const Tensor<2, dim> du_aux =
+                        du_aux[m] =
                           aux_gradient(aux[m], projection, xl, r, angle);
                         const SymmetricTensor<2, dim> eps_aux =
-                          symmetrize(du_aux);
+                          symmetrize(du_aux[m]);
                         const SymmetricTensor<2, dim> sigma_aux =
                           material.stress<dim>(eps_aux);
-                        T[m] = transpose(du_aux) * Tensor<2, dim>(sigma) +
+                        T[m] = transpose(du_aux[m]) * Tensor<2, dim>(sigma) +
                                transpose(du) * Tensor<2, dim>(sigma_aux);
                         const double w = sigma * eps_aux;
                         for (unsigned int k = 0; k < dim; ++k)
@@ -748,10 +749,6 @@ namespace xcrack
                         Tensor<1, dim> f;
                         for (unsigned int d = 0; d < dim; ++d)
                           f[d] = f_value[d];
-                        Tensor<2, dim> du_aux[n_modes];
-                        for (unsigned int m = 0; m < n_modes; ++m)
-                          du_aux[m] =
-                            aux_gradient(aux[m], projection, xl, r, angle);
                         for (const unsigned int j : active_tests)
                           {
                             const Tensor<1, dim> theta = theta_at(xi, j);
