@@ -121,11 +121,6 @@ namespace xcrack
                                       mpi_communicator) == 1,
                         "Enrichment/Gather tip DoFs = true is implemented for "
                         "2D runs on one rank only.");
-            check_input(cracks.size() == 1,
-                        "Enrichment/Gather tip DoFs = true ties the DoFs of "
-                        "one tip zone: it needs a single crack (Cracks/Number "
-                        "of cracks = " +
-                          std::to_string(cracks.size()) + ").");
             check_input(
               cracks[0]
                   .front(0, GridTools::compute_bounding_box(triangulation))

@@ -147,10 +147,11 @@ namespace xcrack
     check_input(cracks.size() < invalid_crack,
                 "Cracks/Number of cracks: at most " +
                   std::to_string(invalid_crack - 1) + " cracks.");
-    check_input(!parameters.gather || cracks.size() == 1,
-                "Enrichment/Gather tip DoFs = true needs a single crack "
-                "(Cracks/Number of cracks = " +
-                  std::to_string(cracks.size()) + ").");
+    check_input(
+      !parameters.gather || cracks.size() == 1,
+      "Enrichment/Gather tip DoFs = true ties the DoFs of one "
+      "tip zone: it needs a single crack (Cracks/Number of cracks = " +
+        std::to_string(cracks.size()) + ").");
     branch_functions.resize(cracks.size());
     for (unsigned int c = 0; c < cracks.size(); ++c)
       {
