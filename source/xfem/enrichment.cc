@@ -628,7 +628,8 @@ namespace xcrack
     fraction_minus.assign(cracks.size(), {});
     heaviside_vertex.assign(tria.n_vertices(), false);
     tip_vertex.assign(tria.n_vertices(), false);
-    vertex_crack.assign(tria.n_vertices(), invalid_crack);
+    // The crack of each enriched vertex.
+    std::vector<unsigned char> vertex_crack(tria.n_vertices(), invalid_crack);
 
     // Where the zones of two cracks meet, one cell would need the functions
     // of both: note the first such place on this rank (all ranks stop

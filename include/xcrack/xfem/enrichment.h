@@ -159,7 +159,7 @@ namespace xcrack
     static constexpr unsigned int heaviside = 1;
     static constexpr unsigned int tip       = 2;
     static constexpr unsigned int both      = 3;
-    /// No crack (cell_crack, vertex_crack): cracks are numbered below it.
+    /// No crack (in a cell or vertex map): cracks are numbered below it.
     static constexpr unsigned char invalid_crack = 255;
 
     /**
@@ -313,10 +313,8 @@ namespace xcrack
     std::vector<bool> near_front;
     /// Whether the functions of each vertex are enriched by H, by F1..F4
     /// (vertices of the owned and ghost cells).
-    std::vector<bool> heaviside_vertex;
-    std::vector<bool> tip_vertex;
-    /// The crack of each enriched vertex.
-    std::vector<unsigned char>                      vertex_crack;
+    std::vector<bool>                               heaviside_vertex;
+    std::vector<bool>                               tip_vertex;
     mutable std::map<unsigned int, Quadrature<dim>> special_rules;
   };
 } // namespace xcrack
