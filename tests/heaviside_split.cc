@@ -8,7 +8,8 @@
 // exactly through a row of nodes, or 1e-8 of an edge above or below it, is
 // still reproduced to round-off (the condition number grows like h/delta);
 // at 1e-12 the barely cut supports lose their enrichment (volume criterion)
-// and the error stays below 1e-9 with a condition number of a plain mesh.
+// and the error stays below 1e-9 with a condition number of a plain mesh;
+// with fit to vertex a crack within the tolerance runs through the nodes.
 
 #include <deal.II/base/mpi.h>
 
@@ -60,6 +61,10 @@ input(const Case &c, const bool with_crack)
       << "subsection Mesh\n set Upper corner = 1, 1, 1\n set Subdivisions = 4, 4, 4\nend\n"
       << "subsection Boundary conditions\n"
       << " set Dirichlet = 4: 0; 0; 0 | 5: 0.01; -0.02; 0.1\nend\n";
+  // The exact solution jumps at the crack as given: fit to vertex (which
+  // moves it by up to 1e-2 h where it passes that close to a node) is off
+  // here; check_near_nodes() and check_fitted_3d() test it.
+  in << "subsection Enrichment\n set Fit to vertex tolerance = 0\nend\n";
   in << "subsection Exact solution\n set Displacement = " << rigid << "\nend\n";
   if (with_crack)
     {
@@ -113,14 +118,35 @@ check(const Case &c)
 
 // The condition number is computed on one rank: every rank solves these
 // small problems on its own, in its own output directory.
+//
+// With fit to vertex (tolerance tau, a fraction of h), a crack within tau h
+// of the row is moved onto it: the enriched DoFs and the condition number
+// of a crack through the nodes, and the rigid split with its jump at the
+// row (y = 0.5) to round-off. A crack beyond tau h stays where it is.
 void
 check_near_nodes()
 {
   const unsigned int rank = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-  for (const double offset : {0., 1e-8, -1e-8, 1e-12})
+  struct Offset
+  {
+    double offset;
+    double fit; // Enrichment/Fit to vertex tolerance
+  };
+  for (const auto [offset, fit] : {Offset{0., 0.},
+                                   Offset{1e-8, 0.},
+                                   Offset{-1e-8, 0.},
+                                   Offset{1e-12, 0.},
+                                   Offset{1e-8, 1e-2},
+                                   Offset{-1e-8, 1e-2},
+                                   Offset{1e-3, 1e-2},
+                                   Offset{-1e-3, 1e-2},
+                                   Offset{2e-3, 1e-2}})
     {
-      std::ostringstream y;
+      // Where the discrete jump should be: the row if the crack is fitted.
+      const bool         fitted = std::abs(offset) <= fit * 0.125;
+      std::ostringstream y, jump;
       y << std::setprecision(17) << 0.5 + offset;
+      jump << std::setprecision(17) << (fitted ? 0.5 : 0.5 + offset);
       std::ostringstream in;
       in << "set Dimension = 2\nset Output directory = results-" << rank << "\n"
          << "subsection Output\n set Write vtu = false\n"
@@ -129,21 +155,64 @@ check_near_nodes()
          << "subsection Mesh\n set Subdivisions = 8, 8\nend\n"
          << "subsection Boundary conditions\n"
          << " set Dirichlet = 2: 0; 0 | 3: 0.01; 0.1\nend\n"
-         << "subsection Exact solution\n set Displacement = y >= " << y.str()
-         << " ? 0.01 : 0; y >= " << y.str() << " ? 0.1 : 0\nend\n"
+         << "subsection Enrichment\n set Fit to vertex tolerance = " << fit
+         << "\nend\n"
+         << "subsection Exact solution\n set Displacement = y >= " << jump.str()
+         << " ? 0.01 : 0; y >= " << jump.str() << " ? 0.1 : 0\nend\n"
          << "subsection Cracks\n set Number of cracks = 1\n"
          << " subsection Crack 1\n  set Start point = -0.1, " << y.str()
          << "\n  set End point = 1.1, " << y.str()
          << "\n  set Tips = none\n end\nend\n";
       std::unique_ptr<xcrack::ElasticityProblem<2>> problem;
       const auto &stats = run<2>(in.str(), problem, MPI_COMM_SELF);
-      logfile << "crack at " << offset << " from a row of nodes (h = 0.125): "
-              << stats.get("enriched_dofs", 0)
+      logfile << "crack at " << offset << " from a row of nodes (h = 0.125)"
+              << (fit > 0 ?
+                    ", fit to vertex " + std::to_string(fit).substr(0, 4) +
+                      (fitted ? " (fitted)" : " (not fitted)") :
+                    std::string())
+              << ": " << stats.get("enriched_dofs", 0)
               << " enriched dofs, condition number ~ 10^"
               << std::lround(std::log10(stats.get("condition_number", 0)))
               << ", relative L2 error < 1e-9: "
               << (stats.get("L2_error", 0) < 1e-9 ? "yes" : "NO") << std::endl;
     }
+}
+
+// Fit to vertex in 3D, on all ranks (the fitted vertices are agreed over
+// the partition): a plane crack tilted by 1e-4 against the node plane
+// z = 0.5 (within 1e-2 h of it on every mesh) is moved onto that plane, and
+// the rigid split with its jump at z = 0.5 is reproduced to round-off on a
+// mesh refined around it (hanging nodes on the fitted plane).
+void
+check_fitted_3d()
+{
+  const std::string  side = "z >= 0.5";
+  std::ostringstream in;
+  in << "set Dimension = 3\nset Output directory = results\n"
+     << "subsection Output\n set Write vtu = false\n"
+     << " set Timing summary = false\nend\n"
+     << "subsection Mesh\n set Upper corner = 1, 1, 1\n"
+     << " set Subdivisions = 4, 4, 4\nend\n"
+     << "subsection Mesh refinement\n set Number of cycles = 3\n"
+     << " set Strategy = region\n set Region = 0.3 - x - abs(z - 0.5)\nend\n"
+     << "subsection Boundary conditions\n"
+     << " set Dirichlet = 4: 0; 0; 0 | 5: 0.01; -0.02; 0.1\nend\n"
+     << "subsection Exact solution\n set Displacement = " << side
+     << " ? 0.01 : 0; " << side << " ? -0.02 : 0; " << side
+     << " ? 0.1 : 0\nend\n"
+     << "subsection Enrichment\n set Fit to vertex tolerance = 0.01\nend\n"
+     << "subsection Cracks\n set Number of cracks = 1\n subsection Crack 1\n"
+     << "  set Shape = penny\n  set Center = 0, 0, 0.5\n"
+     << "  set Normal = 1e-4, 5e-5, 1\n  set Radius = 10\n end\nend\n";
+  std::unique_ptr<xcrack::ElasticityProblem<3>> problem;
+  const auto &stats = run<3>(in.str(), problem);
+  for (unsigned int r = 0; r < stats.n_rows(); ++r)
+    logfile << "3D Q1, crack tilted 1e-4 off a node plane, fit to vertex "
+            << "0.01, cycle " << r << ": " << stats.get("cells", r)
+            << " cells, " << stats.get("enriched_dofs", r)
+            << " enriched dofs, rigid split at the node plane reproduced "
+            << "(relative L2 error < 1e-12): "
+            << (stats.get("L2_error", r) < 1e-12 ? "yes" : "NO") << std::endl;
 }
 
 int
@@ -162,4 +231,5 @@ main(int argc, char **argv)
   // treatment yet): the tolerance says how much.
   check<3>({"3D Q2", 3, 2, 2, 1e-8});
   check_near_nodes();
+  check_fitted_3d();
 }

@@ -229,7 +229,9 @@ namespace xcrack
     if (cracks.size() == 0)
       return;
     TimerOutput::Scope t(*timer, "levelset");
-    level_sets.update(cracks);
+    level_sets.update(cracks,
+                      enrichment ? enrichment->lsn_shift() :
+                                   std::vector<std::vector<double>>());
   }
 
 
@@ -1102,10 +1104,11 @@ namespace xcrack
           }
         // The level-set fields give the crack as the mesh sees it (lips and
         // front, written and reported below); the enrichment still reads the
-        // analytic geometry, which the fields interpolate. Propagation will
-        // update the fields every step.
-        update_level_sets();
+        // analytic geometry, which the fields interpolate (after the shifts
+        // of fit to vertex, hence after the setup). Propagation will update
+        // the fields every step.
         setup_system();
+        update_level_sets();
         assemble_system();
         const unsigned int iterations = solve();
 

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <set>
@@ -221,6 +222,9 @@ namespace xcrack
     std::vector<double>       local_points;
     std::vector<unsigned int> local_segments;
     double                    local_measure = 0;
+    // The smallest cell holding a front point: copies of a point lie much
+    // closer than that to each other, distinct points not.
+    double smallest_cell = std::numeric_limits<double>::max();
 
     Vector<double> lsn_values(GeometryInfo<dim>::vertices_per_cell);
     Vector<double> lst_values(GeometryInfo<dim>::vertices_per_cell);
@@ -262,6 +266,7 @@ namespace xcrack
           CellQuadrature::front_points<dim>(lsn, lst);
         if (crossings.empty() || (dim == 3 && crossings.size() < 2))
           continue;
+        smallest_cell = std::min(smallest_cell, cell->diameter());
         FEValues<dim> fe_values(mapping,
                                 dof_handler.get_fe(),
                                 Quadrature<dim>(crossings),
@@ -302,7 +307,8 @@ namespace xcrack
               }
           }
       }
-    lips_measure = Utilities::MPI::sum(local_measure, communicator);
+    lips_measure  = Utilities::MPI::sum(local_measure, communicator);
+    smallest_cell = Utilities::MPI::min(smallest_cell, communicator);
 
     // Every rank assembles every front: they are small, and every rank
     // needs them (fracture parameters, propagation).
@@ -336,14 +342,11 @@ namespace xcrack
     if (position.empty())
       return;
 
-    // Merge the copies of a point found by the cells sharing it: sweep in
-    // x with a tolerance relative to the extent of the front.
-    double extent = 0;
-    for (const auto &x : position)
-      for (unsigned int d = 0; d < dim; ++d)
-        extent = std::max(extent, std::abs(x[d] - position[0][d]));
-    const double tolerance =
-      1e-9 * std::max(extent, 1e-9 * position[0].norm() + 1e-300);
+    // Merge the copies of a point found by the cells sharing it (they
+    // differ by round-off, or not at all): sweep in x with a tolerance
+    // relative to the cells. (Relative to the extent of the front, as
+    // before, a single 2D tip found by two cells stayed two tips.)
+    const double              tolerance = 1e-9 * smallest_cell;
     std::vector<unsigned int> by_x(position.size());
     std::iota(by_x.begin(), by_x.end(), 0);
     std::sort(by_x.begin(), by_x.end(), [&](unsigned int a, unsigned int b) {

@@ -20,7 +20,8 @@ namespace xcrack
 
   template <int dim>
   void
-  LevelSetFields<dim>::update(const CrackSet<dim> &cracks)
+  LevelSetFields<dim>::update(const CrackSet<dim>                    &cracks,
+                              const std::vector<std::vector<double>> &lsn_shift)
   {
     dof_handler.distribute_dofs(fe);
     const IndexSet owned = dof_handler.locally_owned_dofs();
@@ -32,10 +33,24 @@ namespace xcrack
     TrilinosWrappers::MPI::Vector distributed(owned, comm);
     const auto                    interpolate =
       [&](const std::function<double(const Point<dim> &)> &f,
-          TrilinosWrappers::MPI::Vector                   &field) {
+          TrilinosWrappers::MPI::Vector                   &field,
+          const std::vector<double>                       &shift) {
         VectorTools::interpolate(dof_handler,
                                  ScalarFunctionFromFunctionObject<dim>(f),
                                  distributed);
+        if (!shift.empty())
+          {
+            for (const auto &cell : dof_handler.active_cell_iterators())
+              if (cell->is_locally_owned())
+                for (const unsigned int v : cell->vertex_indices())
+                  {
+                    const auto dof = cell->vertex_dof_index(v, 0);
+                    if (owned.is_element(dof))
+                      distributed[dof] =
+                        f(cell->vertex(v)) - shift[cell->vertex_index(v)];
+                  }
+            distributed.compress(VectorOperation::insert);
+          }
         field.reinit(owned, relevant, comm);
         field = distributed;
       };
@@ -46,9 +61,12 @@ namespace xcrack
       {
         const CrackGeometry<dim> &crack = cracks[i];
         interpolate([&](const Point<dim> &p) { return crack.lsn(p); },
-                    normal[i]);
+                    normal[i],
+                    (i < lsn_shift.size() ? lsn_shift[i] :
+                                            std::vector<double>()));
         interpolate([&](const Point<dim> &p) { return crack.lst(p); },
-                    tangent[i]);
+                    tangent[i],
+                    {});
       }
   }
 

@@ -19,6 +19,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -64,6 +65,19 @@ namespace xcrack
         "dropping it costs an error of the order of the square root of the "
         "fraction. 0 keeps every support that is cut at all.");
       prm.declare_entry(
+        "Fit to vertex tolerance",
+        "0.01",
+        Patterns::Double(0, 0.45),
+        "Fit to vertex: where the crack surface passes closer to a node "
+        "than this fraction of the node's shortest edge (and the node is "
+        "not beyond the front), the crack is moved through the node (its "
+        "lsn shifted in the cells around it). The cut then leaves no sliver "
+        "thinner than this fraction of a cell: better conditioning, at the "
+        "price of moving the crack by at most this fraction of h. 0: off "
+        "(the Heaviside volume tolerance still drops the jump of the "
+        "thinnest slivers, but a crack 1e-4 h from a node of a tilted cut "
+        "leaves a condition number of 1e16 without it).");
+      prm.declare_entry(
         "Tip enrichment",
         "topological",
         Patterns::Selection("none|topological|geometric"),
@@ -106,6 +120,7 @@ namespace xcrack
   {
     prm.enter_subsection("Enrichment");
     heaviside_volume_tolerance = prm.get_double("Heaviside volume tolerance");
+    fit_to_vertex              = prm.get_double("Fit to vertex tolerance");
     const std::string zone     = prm.get("Tip enrichment");
     tip_zone                   = (zone == "none"        ? TipZone::none :
                                   zone == "topological" ? TipZone::topological :
@@ -174,13 +189,25 @@ namespace xcrack
     using Cell = typename Triangulation<dim>::cell_iterator;
     using EnrichmentFunction =
       std::function<const Function<dim> *(const Cell &)>;
-    const std::vector<EnrichmentFunction> jump = {[this](const Cell &cell) {
-      return static_cast<const Function<dim> *>(
-        heaviside_functions[crack_index(cell)].get());
-    }};
-    std::vector<EnrichmentFunction>       branches;
+    // Cells next to a fitted vertex evaluate them with their shifted lsn.
+    const auto fitted = [this](const Cell &cell) -> const FittedCell * {
+      if (!cell->is_active())
+        return nullptr;
+      const auto it = fitted_cells.find(cell->active_cell_index());
+      return (it == fitted_cells.end() ? nullptr : &it->second);
+    };
+    const std::vector<EnrichmentFunction> jump = {
+      [this, fitted](const Cell &cell) {
+        if (const FittedCell *f = fitted(cell))
+          return static_cast<const Function<dim> *>(f->heaviside.get());
+        return static_cast<const Function<dim> *>(
+          heaviside_functions[crack_index(cell)].get());
+      }};
+    std::vector<EnrichmentFunction> branches;
     for (unsigned int k = 0; k < BranchFunction<dim>::n_functions; ++k)
-      branches.push_back([this, k](const Cell &cell) {
+      branches.push_back([this, k, fitted](const Cell &cell) {
+        if (const FittedCell *f = fitted(cell))
+          return static_cast<const Function<dim> *>(f->branches[k].get());
         return static_cast<const Function<dim> *>(
           branch_functions[crack_index(cell)][k].get());
       });
@@ -228,10 +255,25 @@ namespace xcrack
 
 
   template <int dim>
+  const std::vector<std::vector<double>> &
+  Enrichment<dim>::lsn_shift() const
+  {
+    return vertex_shift;
+  }
+
+
+
+  template <int dim>
   const CrackGeometry<dim> &
   Enrichment<dim>::crack_of(
     const typename Triangulation<dim>::cell_iterator &cell) const
   {
+    if (cell->is_active())
+      {
+        const auto it = fitted_cells.find(cell->active_cell_index());
+        if (it != fitted_cells.end())
+          return *it->second.crack;
+      }
     return *cracks[crack_index(cell)];
   }
 
@@ -363,11 +405,78 @@ namespace xcrack
     const unsigned int                                c,
     const bool                                        normal) const
   {
+    const bool shifted =
+      normal && c < vertex_shift.size() && !vertex_shift[c].empty();
     std::vector<double> values;
     for (const unsigned int v : cell->vertex_indices())
-      values.push_back(normal ? cracks[c]->lsn(cell->vertex(v)) :
-                                cracks[c]->lst(cell->vertex(v)));
+      values.push_back(
+        normal ? cracks[c]->lsn(cell->vertex(v)) -
+                   (shifted ? vertex_shift[c][cell->vertex_index(v)] : 0.) :
+                 cracks[c]->lst(cell->vertex(v)));
     return values;
+  }
+
+
+
+  template <int dim>
+  std::pair<std::array<double, GeometryInfo<dim>::vertices_per_cell>, bool>
+  Enrichment<dim>::cell_shift(
+    const typename Triangulation<dim>::cell_iterator &cell,
+    const unsigned int                                c) const
+  {
+    std::array<double, GeometryInfo<dim>::vertices_per_cell> shift{};
+    bool                                                     any = false;
+    if (c < vertex_shift.size() && !vertex_shift[c].empty())
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          shift[v] = vertex_shift[c][cell->vertex_index(v)];
+          any      = any || shift[v] != 0;
+        }
+    return {shift, any};
+  }
+
+
+
+  template <int dim>
+  void
+  Enrichment<dim>::fit_to_vertices(const Triangulation<dim> &tria,
+                                   const unsigned int        c)
+  {
+    vertex_shift[c].clear();
+    const double tolerance = parameters.fit_to_vertex;
+    if (tolerance == 0)
+      return;
+    // The shortest edge at each vertex, complete for the vertices of owned
+    // cells (all their neighbours are owned or ghost); the owners' choices
+    // are copied to the other vertices of ghost cells below.
+    std::vector<double> edge(tria.n_vertices(),
+                             std::numeric_limits<double>::max());
+    for (const auto &cell : tria.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (unsigned int l = 0; l < cell->n_lines(); ++l)
+          for (const unsigned int i : {0u, 1u})
+            {
+              const unsigned int v = cell->line(l)->vertex_index(i);
+              edge[v] = std::min(edge[v], cell->line(l)->diameter());
+            }
+    std::vector<bool> fitted(tria.n_vertices(), false);
+    for (unsigned int v = 0; v < tria.n_vertices(); ++v)
+      if (edge[v] < std::numeric_limits<double>::max())
+        {
+          const Point<dim> &x   = tria.get_vertices()[v];
+          const double      lsn = cracks[c]->lsn(x);
+          // On the crack side of the front (a cell's width beyond it
+          // counts: its tip cells are cut too).
+          fitted[v] = (lsn != 0 && std::abs(lsn) <= tolerance * edge[v] &&
+                       cracks[c]->lst(x) <= edge[v]);
+        }
+    import_ghost_vertex_flags(tria, fitted, /*overwrite=*/true);
+    if (std::find(fitted.begin(), fitted.end(), true) == fitted.end())
+      return;
+    vertex_shift[c].assign(tria.n_vertices(), 0.);
+    for (unsigned int v = 0; v < tria.n_vertices(); ++v)
+      if (fitted[v])
+        vertex_shift[c][v] = cracks[c]->lsn(tria.get_vertices()[v]);
   }
 
 
@@ -400,6 +509,13 @@ namespace xcrack
         {
           const std::vector<double> lsn = vertex_values(cell, c, true);
           const std::vector<double> lst = vertex_values(cell, c, false);
+          // The sides of points as the cell's functions will see them
+          // (with the fit-to-vertex shift, if any).
+          const auto [shift, shifted] = cell_shift(cell, c);
+          std::optional<FittedCrack<dim>> fitted;
+          if (shifted)
+            fitted.emplace(crack, cell, shift);
+          const CrackGeometry<dim> &side = (shifted ? *fitted : crack);
           const auto [min_lsn, max_lsn] =
             std::minmax_element(lsn.begin(), lsn.end());
           const auto [min_lst, max_lst] =
@@ -459,7 +575,7 @@ namespace xcrack
           double     minus;
           if (kind == CellKind::plain && !near)
             // Not on the crack: the whole cell lies on one side of it.
-            minus = (crack.lsn(cell->center()) >= 0 ? 0. : 1.);
+            minus = (side.lsn(cell->center()) >= 0 ? 0. : 1.);
           else if (kind == CellKind::split && !near)
             minus = CellQuadrature::cut_cell_rule<dim>(lsn, 2).second;
           else
@@ -479,7 +595,7 @@ namespace xcrack
                                                                  v) *
                       cell->vertex(v);
                   total += rule.weight(q);
-                  if (crack.lsn(x) < 0)
+                  if (side.lsn(x) < 0)
                     minus += rule.weight(q);
                 }
               minus /= total;
@@ -626,6 +742,8 @@ namespace xcrack
     near_front.assign(tria.n_active_cells(), false);
     cell_crack.assign(tria.n_active_cells(), 0);
     fraction_minus.assign(cracks.size(), {});
+    vertex_shift.assign(cracks.size(), {});
+    fitted_cells.clear();
     heaviside_vertex.assign(tria.n_vertices(), false);
     tip_vertex.assign(tria.n_vertices(), false);
     // The crack of each enriched vertex.
@@ -664,6 +782,7 @@ namespace xcrack
     std::vector<std::vector<CellKind>> kind_of_crack(cracks.size());
     for (unsigned int c = 0; c < cracks.size(); ++c)
       {
+        fit_to_vertices(tria, c);
         CrackZone zone    = classify(tria, c);
         fraction_minus[c] = std::move(zone.fraction_minus);
         near_crack[c]     = std::move(zone.near_front);
@@ -771,9 +890,28 @@ namespace xcrack
                ++c)
             if (near_crack[c][i])
               crack = c;
-          cell_crack[i] = (crack == invalid_crack ? 0 : crack);
-          cell_kind[i]  = kind_of_crack[cell_crack[i]][i];
-          near_front[i] = near_crack[cell_crack[i]][i];
+          cell_crack[i]               = (crack == invalid_crack ? 0 : crack);
+          cell_kind[i]                = kind_of_crack[cell_crack[i]][i];
+          near_front[i]               = near_crack[cell_crack[i]][i];
+          const auto [shift, shifted] = cell_shift(cell, cell_crack[i]);
+          if (shifted)
+            {
+              FittedCell &f = fitted_cells[i];
+              f.crack =
+                std::make_unique<FittedCrack<dim>>(*cracks[cell_crack[i]],
+                                                   cell,
+                                                   shift);
+              f.heaviside = std::make_unique<HeavisideFunction<dim>>(*f.crack);
+              for (unsigned int k = 0; k < BranchFunction<dim>::n_functions;
+                   ++k)
+                {
+                  f.branches.push_back(
+                    std::make_unique<BranchFunction<dim>>(*f.crack, k));
+                  if (parameters.gather)
+                    f.branches.back()->set_cutoff(0.5 * parameters.radius,
+                                                  parameters.radius);
+                }
+            }
           if (cell->is_locally_owned())
             cell->set_active_fe_index((jump ? heaviside : plain) +
                                       (branches ? tip : plain));

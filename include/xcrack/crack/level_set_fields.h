@@ -28,9 +28,16 @@ namespace xcrack
     explicit LevelSetFields(
       const parallel::distributed::Triangulation<dim> &triangulation);
 
-    /// Interpolate the level sets of @p cracks on the current mesh.
+    /**
+     * Interpolate the level sets of @p cracks on the current mesh. With
+     * @p lsn_shift (per crack, per vertex of the triangulation; empty: no
+     * shift) lsn is lowered by it at the vertices: the crack the
+     * enrichment fitted to the vertices (Enrichment::lsn_shift()), so that
+     * the lips and front reported and written are those the solution has.
+     */
     void
-    update(const CrackSet<dim> &cracks);
+    update(const CrackSet<dim>                    &cracks,
+           const std::vector<std::vector<double>> &lsn_shift = {});
 
     const DoFHandler<dim> &
     get_dof_handler() const;

@@ -11,7 +11,9 @@
 
 #include <xcrack/crack/crack_geometry.h>
 #include <xcrack/xfem/branch_functions.h>
+#include <xcrack/xfem/fitted_crack.h>
 
+#include <array>
 #include <map>
 #include <memory>
 #include <vector>
@@ -66,11 +68,14 @@ namespace xcrack
       geometric
     };
 
-    double       heaviside_volume_tolerance = 1e-9;
-    TipZone      tip_zone                   = TipZone::topological;
-    double       radius                     = 0;
-    unsigned int tip_quadrature_points      = 6;
-    bool         gather                     = false;
+    double heaviside_volume_tolerance = 1e-9;
+    /// Fit-to-vertex: a vertex closer to the crack surface than this
+    /// fraction of its shortest adjacent edge is moved onto it (0: off).
+    double       fit_to_vertex         = 0.01;
+    TipZone      tip_zone              = TipZone::topological;
+    double       radius                = 0;
+    unsigned int tip_quadrature_points = 6;
+    bool         gather                = false;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -137,6 +142,17 @@ namespace xcrack
    * zone carries F_k itself (times a partition of unity that is one inside
    * it) at the cost of 4 x dim unknowns.
    *
+   * Fit to vertex (`Fit to vertex tolerance` tau > 0): where the crack
+   * passes within tau times the shortest adjacent edge of a vertex (on
+   * the crack side of the front), the crack is moved through the vertex:
+   * lsn is shifted by the interpolant of its value there (FittedCrack),
+   * in the rules, the classification and the enrichment functions of the
+   * cells around that vertex alike. The cut then runs through the node
+   * instead of leaving a sliver of relative size tau, which bounds the
+   * smallest side of a cut support away from zero; the crack moves by at
+   * most tau h. It complements the volume criterion, which drops the jump
+   * of slivers the tolerance does not reach.
+   *
    * Several cracks share the four FE indices: each cell evaluates the
    * functions of one crack (crack_of()), the one whose cut, front or
    * enriched nodes it holds. This is the "colouring" of enrichment zones
@@ -148,7 +164,7 @@ namespace xcrack
    * functions; refining between the cracks separates the zones.
    *
    * Not yet: gathering in 3D (per front segment), on several ranks and with
-   * several cracks; shifted enrichment; fit to vertex; crossing or
+   * several cracks; shifted enrichment; crossing or
    * branching cracks (overlapping zones).
    */
   template <int dim>
@@ -219,6 +235,14 @@ namespace xcrack
     unsigned int
     crack_index(const typename Triangulation<dim>::cell_iterator &cell) const;
 
+    /**
+     * Fit to vertex: lsn_shift()[c][v] is subtracted from crack c's lsn at
+     * vertex v of the triangulation (its lsn there if the crack was moved
+     * through the vertex, else 0; an empty vector when nothing moved).
+     */
+    const std::vector<std::vector<double>> &
+    lsn_shift() const;
+
     /// The crack whose functions @p cell evaluates (see crack_index()).
     const CrackGeometry<dim> &
     crack_of(const typename Triangulation<dim>::cell_iterator &cell) const;
@@ -280,6 +304,18 @@ namespace xcrack
                   const unsigned int                                c,
                   const bool normal) const;
 
+    /**
+     * The shifts of crack @p c's lsn at the vertices of @p cell
+     * (fit-to-vertex), and whether any is not zero.
+     */
+    std::pair<std::array<double, GeometryInfo<dim>::vertices_per_cell>, bool>
+    cell_shift(const typename Triangulation<dim>::cell_iterator &cell,
+               const unsigned int                                c) const;
+
+    /// Decide which vertices crack @p c is fitted to (vertex_shift[c]).
+    void
+    fit_to_vertices(const Triangulation<dim> &tria, const unsigned int c);
+
     /// Classification of the cells and vertices by one crack.
     struct CrackZone
     {
@@ -301,9 +337,21 @@ namespace xcrack
     std::vector<std::unique_ptr<HeavisideFunction<dim>>> heaviside_functions;
     /// branch_functions[crack][k] = F_{k+1} of that crack.
     std::vector<std::vector<std::unique_ptr<BranchFunction<dim>>>>
-                          branch_functions;
-    hp::FECollection<dim> fe_collection;
-    std::vector<CellKind> cell_kind;
+      branch_functions;
+    /// Fit-to-vertex: vertex_shift[crack][vertex] is subtracted from lsn (the
+    /// value of lsn at a fitted vertex, 0 elsewhere).
+    std::vector<std::vector<double>> vertex_shift;
+    /// The crack and functions of a cell next to a fitted vertex, with the
+    /// shifted lsn (owned and ghost cells; by active cell index).
+    struct FittedCell
+    {
+      std::unique_ptr<FittedCrack<dim>>                 crack;
+      std::unique_ptr<HeavisideFunction<dim>>           heaviside;
+      std::vector<std::unique_ptr<BranchFunction<dim>>> branches;
+    };
+    std::map<unsigned int, FittedCell> fitted_cells;
+    hp::FECollection<dim>              fe_collection;
+    std::vector<CellKind>              cell_kind;
     /// The crack each cell evaluates (crack_index()).
     std::vector<unsigned char> cell_crack;
     /// Fraction of each cell's volume on the negative side of each crack
