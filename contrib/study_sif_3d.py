@@ -8,12 +8,27 @@ the wall time of the extraction next to the solve.
     contrib/build.sh release
     /usr/bin/python3 contrib/study_sif_3d.py convergence [--cycles 6]
     /usr/bin/python3 contrib/study_sif_3d.py smoothing [--cycles 5] [--runs 1]
+    /usr/bin/python3 contrib/study_sif_3d.py bases [--cycles 6] [--jobs 2]
+    /usr/bin/python3 contrib/study_sif_3d.py trade [--cycles 6] [--jobs 2]
 
-Prints markdown tables (doc/verification.md); `convergence` also writes
-doc/figures/sif_convergence_3d.png. A six-cycle run of one benchmark takes
+Prints markdown tables (doc/verification.md, doc/performance.md);
+`convergence` also writes doc/figures/sif_convergence_3d.png, `bases`
+doc/figures/sif_bases_3d.png. A six-cycle run of one benchmark takes
 about five minutes on one core.
+
+`bases`: the K_I error of the penny per cycle for each front basis (the
+rate against the front cell size h). `trade`: on the penny's last mesh,
+one knob at a time against the shipped choice (crowns 2-4 cells, Legendre
+degree 5, 6 tip quadrature points): the crowns (their independence: the
+front-averaged K_I against the baseline's), the basis and its size, the
+tip rule; with the wall time of the extraction. `--jobs 2` runs two
+choices at once (one core each); the times are then those of a loaded
+machine, compared with the baseline run under the same load.
 """
 import argparse
+import concurrent.futures
+import csv
+import math
 import os
 import statistics
 import sys
@@ -34,17 +49,41 @@ smoothings = [
 ]
 
 
-def run(benchmark, cycles, work, smoothing=None):
+def run(benchmark, cycles, work, smoothing=None, fracture="", enrichment=""):
+    """Run a benchmark with `cycles` cycles in work/out; smoothing is
+    (basis, Legendre degree, front segments); fracture and enrichment are
+    extra lines for those subsections."""
     text = (f"include {os.path.join(top, 'prm', 'benchmarks', benchmark)}\n"
             f"set Output directory = {os.path.join(work, 'out')}\n"
             "subsection Output\n  set Timing summary = false\nend\n"
             f"subsection Mesh refinement\n  set Number of cycles = {cycles}\nend\n")
     if smoothing:
-        text += ("subsection Fracture parameters\n"
-                 f"  set Smoothing = {smoothing[0]}\n"
-                 f"  set Legendre degree = {smoothing[1]}\n"
-                 f"  set Front segments = {smoothing[2]}\nend\n")
+        fracture += (f"  set Smoothing = {smoothing[0]}\n"
+                     f"  set Legendre degree = {smoothing[1]}\n"
+                     f"  set Front segments = {smoothing[2]}\n")
+    if fracture:
+        text += f"subsection Fracture parameters\n{fracture}end\n"
+    if enrichment:
+        text += f"subsection Enrichment\n{enrichment}end\n"
     return run_xcrack(text, work)
+
+
+def front_k(work, step):
+    """K_I at the points of front_<step>.csv of a run in work/out."""
+    with open(os.path.join(work, "out", f"front_{step:03d}.csv")) as f:
+        return [float(r["K_I"]) for r in csv.DictReader(f)]
+
+
+def run_choices(choices, cycles, jobs, benchmark="sif_penny_3d.prm"):
+    """Run each (label, kwargs of run()) in its own directory, `jobs` at
+    once; return {label: (statistics rows, K_I along the last front)}."""
+    def one(choice):
+        label, kwargs = choice
+        with tempfile.TemporaryDirectory() as work:
+            rows = run(benchmark, cycles, work, **kwargs)
+            return label, (rows, front_k(work, int(rows[-1]["step"])))
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        return dict(pool.map(one, choices))
 
 
 def convergence(args):
@@ -111,15 +150,127 @@ def smoothing(args):
                   f"{float(last['t_solve']):.1f} |")
 
 
+def bases(args):
+    choices = [("Legendre degree 5", {"smoothing": ("legendre", 5, 0)}),
+               ("Lagrange", {"smoothing": ("lagrange", 0, 0)}),
+               ("Lagrange regularised",
+                {"smoothing": ("lagrange regularized", 0, 0)})]
+    results = run_choices(choices, args.cycles, args.jobs)
+    print("\npenny (sif_penny_3d.prm), K_I error per cycle (h: front cell "
+          "size; rate: log2 of the error ratio to the previous cycle)\n")
+    labels = [c[0] for c in choices]
+    print("| cycle | h | DoFs | " + " | ".join(
+        f"{l} | rate" for l in labels) + " |")
+    print("|---|---|---|" + "---|---|" * len(labels))
+    first = results[labels[0]][0]
+    for i, r in enumerate(first):
+        h = 2.0 ** (1 - int(r["step"]))
+        cells = []
+        for l in labels:
+            rows = results[l][0]
+            e = float(rows[i]["K_I_error"])
+            rate = (f"{math.log2(float(rows[i - 1]['K_I_error']) / e):.2f}"
+                    if i > 0 else "-")
+            cells.append(f"{e:.2e} | {rate}")
+        print(f"| {r['step']} | {h:g} | {r['dofs']} | " + " | ".join(cells)
+              + " |")
+    plot_bases(labels, {l: results[l][0] for l in labels})
+
+
+def plot_bases(labels, rows_of):
+    """doc/figures/sif_bases_3d.png: K_I error against h for each basis
+    (rows_of: label -> statistics rows with step and K_I_error)."""
+    first = rows_of[labels[0]]
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        return
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    for l in labels:
+        rows = rows_of[l]
+        ax.loglog([2.0 ** (1 - int(r["step"])) for r in rows],
+                  [float(r["K_I_error"]) for r in rows], "o-", label=l)
+    hs = [2.0 ** (1 - int(r["step"])) for r in first[-3:]]
+    ax.loglog(hs, [0.5 * h * h / hs[-1] ** 2 * float(first[-1]["K_I_error"])
+                   for h in hs], "k--", lw=0.8, label="h^2")
+    ax.axhline(0.01, color="gray", lw=0.8, ls=":")
+    ax.invert_xaxis()
+    ax.set_xlabel("front cell size h")
+    ax.set_ylabel("max relative K_I error along the penny front")
+    ax.legend(fontsize=8)
+    ax.grid(True, which="both", lw=0.3)
+    fig.tight_layout()
+    path = os.path.join(top, "doc", "figures", "sif_bases_3d.png")
+    fig.savefig(path, dpi=120)
+    print(f"\nwrote {path}")
+
+
+def trade(args):
+    base = "  set Crown radii = 2, 4\n"
+    choices = [
+        ("baseline: crowns 2-4, Legendre 5, tip rule 6", {"fracture": base}),
+        ("crowns 1-2", {"fracture": "  set Crown radii = 1, 2\n"}),
+        ("crowns 1.5-3", {"fracture": "  set Crown radii = 1.5, 3\n"}),
+        ("crowns 3-6", {"fracture": "  set Crown radii = 3, 6\n"}),
+        ("Legendre degree 0", {"fracture": base,
+                               "smoothing": ("legendre", 0, 0)}),
+        ("Legendre degree 2", {"fracture": base,
+                               "smoothing": ("legendre", 2, 0)}),
+        ("Legendre degree 7", {"fracture": base,
+                               "smoothing": ("legendre", 7, 0)}),
+        ("Lagrange, segments about r_sup", {"fracture": base,
+                                             "smoothing": ("lagrange", 0, 0)}),
+        ("Lagrange, 16 segments", {"fracture": base,
+                                   "smoothing": ("lagrange", 0, 16)}),
+        ("Lagrange, 50 segments", {"fracture": base,
+                                   "smoothing": ("lagrange", 0, 50)}),
+        ("Lagrange regularised", {"fracture": base, "smoothing":
+                                  ("lagrange regularized", 0, 0)}),
+        ("tip rule 3 points", {"fracture": base, "enrichment":
+                               "  set Tip quadrature points = 3\n"}),
+        ("tip rule 10 points", {"fracture": base, "enrichment":
+                                "  set Tip quadrature points = 10\n"}),
+    ]
+    results = run_choices(choices, args.cycles, args.jobs)
+    rows0, k0 = results[choices[0][0]]
+    mean0 = statistics.fmean(k0)
+    t0 = float(rows0[-1]["t_fracture"])
+    last0 = rows0[-1]
+    print(f"\npenny (sif_penny_3d.prm), cycle {last0['step']}: "
+          f"{last0['dofs']} DoFs, t_solve {float(last0['t_solve']):.0f} s "
+          f"(baseline); {args.jobs} run(s) at once\n")
+    print("| choice | front points | K_I error | K_I min | K_I max | "
+          "mean K_I / baseline - 1 | t_K (s) | t_K / baseline |")
+    print("|---|---|---|---|---|---|---|---|")
+    for label, _ in choices:
+        rows, k = results[label]
+        last = rows[-1]
+        t = float(last["t_fracture"])
+        print(f"| {label} | {len(k)} | {float(last['K_I_error']):.2e} | "
+              f"{min(k):.4f} | {max(k):.4f} | "
+              f"{statistics.fmean(k) / mean0 - 1:+.1e} | {t:.0f} | "
+              f"{t / t0:.2f} |")
+
+
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("study", choices=["convergence", "smoothing"])
+    parser.add_argument("study",
+                        choices=["convergence", "smoothing", "bases", "trade"])
     parser.add_argument("--cycles", type=int, default=None)
     parser.add_argument("--runs", type=int, default=1)
+    parser.add_argument("--jobs", type=int, default=1)
     args = parser.parse_args()
     if args.study == "convergence":
         args.cycles = args.cycles or 6
         convergence(args)
+    elif args.study == "bases":
+        args.cycles = args.cycles or 6
+        bases(args)
+    elif args.study == "trade":
+        args.cycles = args.cycles or 6
+        trade(args)
     else:
         args.cycles = args.cycles or 5
         smoothing(args)
