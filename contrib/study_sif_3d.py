@@ -103,6 +103,21 @@ def convergence(args):
                       f"{float(r['K_III_error']):.2e} | "
                       f"{float(r['t_solve']):.1f} | "
                       f"{float(r['t_fracture']):.1f} |")
+
+    def draw(ax):
+        for name, rows in table.items():
+            dofs = [float(r["dofs"]) for r in rows]
+            mode = "K_II_error" if "shear" in name else "K_I_error"
+            ax.loglog(dofs, [float(r[mode]) for r in rows], "o-",
+                      label=f"{name}: {mode.replace('_error', '')}")
+        ax.set_xlabel("DoFs")
+        ax.set_ylabel("max relative error along the front")
+    save_figure(draw, "sif_convergence_3d.png")
+
+
+def save_figure(draw, name):
+    """doc/figures/<name>: a log-log figure that draw(ax) fills, with the
+    1 % target as a dotted line (nothing without matplotlib)."""
     try:
         import matplotlib
         matplotlib.use("Agg")
@@ -110,18 +125,12 @@ def convergence(args):
     except ImportError:
         return
     fig, ax = plt.subplots(figsize=(6, 4.5))
-    for name, rows in table.items():
-        dofs = [float(r["dofs"]) for r in rows]
-        mode = "K_II_error" if "shear" in name else "K_I_error"
-        ax.loglog(dofs, [float(r[mode]) for r in rows], "o-",
-                  label=f"{name}: {mode.replace('_error', '')}")
+    draw(ax)
     ax.axhline(0.01, color="gray", lw=0.8, ls=":")
-    ax.set_xlabel("DoFs")
-    ax.set_ylabel("max relative error along the front")
     ax.legend(fontsize=8)
     ax.grid(True, which="both", lw=0.3)
     fig.tight_layout()
-    path = os.path.join(top, "doc", "figures", "sif_convergence_3d.png")
+    path = os.path.join(top, "doc", "figures", name)
     fig.savefig(path, dpi=120)
     print(f"\nwrote {path}")
 
@@ -181,30 +190,20 @@ def plot_bases(labels, rows_of):
     """doc/figures/sif_bases_3d.png: K_I error against h for each basis
     (rows_of: label -> statistics rows with step and K_I_error)."""
     first = rows_of[labels[0]]
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        return
-    fig, ax = plt.subplots(figsize=(6, 4.5))
-    for l in labels:
-        rows = rows_of[l]
-        ax.loglog([2.0 ** (1 - int(r["step"])) for r in rows],
-                  [float(r["K_I_error"]) for r in rows], "o-", label=l)
-    hs = [2.0 ** (1 - int(r["step"])) for r in first[-3:]]
-    ax.loglog(hs, [0.5 * h * h / hs[-1] ** 2 * float(first[-1]["K_I_error"])
-                   for h in hs], "k--", lw=0.8, label="h^2")
-    ax.axhline(0.01, color="gray", lw=0.8, ls=":")
-    ax.invert_xaxis()
-    ax.set_xlabel("front cell size h")
-    ax.set_ylabel("max relative K_I error along the penny front")
-    ax.legend(fontsize=8)
-    ax.grid(True, which="both", lw=0.3)
-    fig.tight_layout()
-    path = os.path.join(top, "doc", "figures", "sif_bases_3d.png")
-    fig.savefig(path, dpi=120)
-    print(f"\nwrote {path}")
+
+    def draw(ax):
+        for l in labels:
+            rows = rows_of[l]
+            ax.loglog([2.0 ** (1 - int(r["step"])) for r in rows],
+                      [float(r["K_I_error"]) for r in rows], "o-", label=l)
+        hs = [2.0 ** (1 - int(r["step"])) for r in first[-3:]]
+        ax.loglog(hs, [0.5 * h * h / hs[-1] ** 2 *
+                       float(first[-1]["K_I_error"]) for h in hs],
+                  "k--", lw=0.8, label="h^2")
+        ax.invert_xaxis()
+        ax.set_xlabel("front cell size h")
+        ax.set_ylabel("max relative K_I error along the penny front")
+    save_figure(draw, "sif_bases_3d.png")
 
 
 def trade(args):
