@@ -44,7 +44,9 @@ namespace xcrack
           const TrilinosWrappers::MPI::Vector  &rhs,
           const std::vector<std::vector<bool>> &constant_modes) const;
 
-    std::string  type               = "direct";
+    std::string type = "direct";
+    /// Fill-reducing ordering of the direct solver: "amd" or "pord".
+    std::string  ordering           = "amd";
     double       relative_tolerance = 1e-10;
     unsigned int max_iterations     = 2000;
 
