@@ -1,13 +1,11 @@
 #!/usr/bin/env python3
 """K along 3D fronts (BENCHMARKS.md Cases 5 and 6): the error of each K
-against the reference per cycle of the benchmarks, and the choice of the
-smoothing along the front (Legendre degree, Lagrange, regularised
-Lagrange, number of front segments) on the penny at a given cycle, with
-the wall time of the extraction next to the solve.
+against the reference per cycle of the benchmarks, the convergence of
+each front basis, and the cost and gain of each choice of the extraction
+(crowns, basis, front segments, tip rule) on the penny.
 
     contrib/build.sh release
     /usr/bin/python3 contrib/study_sif_3d.py convergence [--cycles 6]
-    /usr/bin/python3 contrib/study_sif_3d.py smoothing [--cycles 5] [--runs 1]
     /usr/bin/python3 contrib/study_sif_3d.py bases [--cycles 6] [--jobs 2]
     /usr/bin/python3 contrib/study_sif_3d.py trade [--cycles 6] [--jobs 2]
 
@@ -42,11 +40,6 @@ benchmarks = {
     "penny, shear": "sif_penny_shear_3d.prm",
     "ellipse b/a = 0.5": "sif_ellipse_3d.prm",
 }
-smoothings = [
-    ("legendre", 0, 0), ("legendre", 2, 0), ("legendre", 5, 0),
-    ("legendre", 7, 0), ("lagrange", 0, 0), ("lagrange", 0, 50),
-    ("lagrange regularized", 0, 0), ("lagrange regularized", 0, 50),
-]
 
 
 def run(benchmark, cycles, work, smoothing=None, fracture="", enrichment=""):
@@ -133,30 +126,6 @@ def save_figure(draw, name):
     path = os.path.join(top, "doc", "figures", name)
     fig.savefig(path, dpi=120)
     print(f"\nwrote {path}")
-
-
-def smoothing(args):
-    print(f"\npenny (sif_penny_3d.prm), {args.cycles} cycles, last cycle\n")
-    print("| smoothing | degree | front segments | nodes | K_I error | "
-          "K_I min | K_I max | t_fracture (s, median) | t_solve (s) |")
-    print("|---|---|---|---|---|---|---|---|---|")
-    with tempfile.TemporaryDirectory() as work:
-        for choice in smoothings:
-            times, rows = [], None
-            for _ in range(args.runs):
-                rows = run("sif_penny_3d.prm", args.cycles, work, choice)
-                times.append(float(rows[-1]["t_fracture"]))
-            last = rows[-1]
-            with open(os.path.join(work, "out",
-                                   f"front_{int(last['step']):03d}.csv")) as f:
-                nodes = len(f.readlines()) - 1
-            print(f"| {choice[0]} | {choice[1] if choice[0] == 'legendre' else '-'}"
-                  f" | {choice[2] or 'auto'} | {nodes} | "
-                  f"{float(last['K_I_error']):.2e} | "
-                  f"{float(last['K_I_min_1']):.4f} | "
-                  f"{float(last['K_I_max_1']):.4f} | "
-                  f"{statistics.median(times):.1f} | "
-                  f"{float(last['t_solve']):.1f} |")
 
 
 def bases(args):
@@ -255,24 +224,12 @@ def trade(args):
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("study",
-                        choices=["convergence", "smoothing", "bases", "trade"])
-    parser.add_argument("--cycles", type=int, default=None)
-    parser.add_argument("--runs", type=int, default=1)
+    parser.add_argument("study", choices=["convergence", "bases", "trade"])
+    parser.add_argument("--cycles", type=int, default=6)
     parser.add_argument("--jobs", type=int, default=1)
     args = parser.parse_args()
-    if args.study == "convergence":
-        args.cycles = args.cycles or 6
-        convergence(args)
-    elif args.study == "bases":
-        args.cycles = args.cycles or 6
-        bases(args)
-    elif args.study == "trade":
-        args.cycles = args.cycles or 6
-        trade(args)
-    else:
-        args.cycles = args.cycles or 5
-        smoothing(args)
+    {"convergence": convergence, "bases": bases, "trade": trade}[args.study](
+        args)
 
 
 if __name__ == "__main__":

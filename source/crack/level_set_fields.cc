@@ -44,8 +44,11 @@ namespace xcrack
               if (cell->is_locally_owned())
                 for (const unsigned int v : cell->vertex_indices())
                   {
+                    // Set, not subtract: a vertex is met by every cell
+                    // around it. Only the few shifted vertices are touched.
                     const auto dof = cell->vertex_dof_index(v, 0);
-                    if (owned.is_element(dof))
+                    if (shift[cell->vertex_index(v)] != 0 &&
+                        owned.is_element(dof))
                       distributed[dof] =
                         f(cell->vertex(v)) - shift[cell->vertex_index(v)];
                   }
