@@ -115,20 +115,6 @@ namespace xcrack
       {
         EnrichmentParameters enrichment_parameters;
         enrichment_parameters.parse_parameters(prm);
-        if (enrichment_parameters.gather)
-          {
-            check_input(dim == 2 && Utilities::MPI::n_mpi_processes(
-                                      mpi_communicator) == 1,
-                        "Enrichment/Gather tip DoFs = true is implemented for "
-                        "2D runs on one rank only.");
-            check_input(
-              cracks[0]
-                  .front(0, GridTools::compute_bounding_box(triangulation))
-                  .size() <= 1,
-              "Enrichment/Gather tip DoFs = true: Crack 1 has two tips; "
-              "gathering ties the DoFs of one tip zone (set Tips = start or "
-              "end, or switch gathering off).");
-          }
         std::vector<const CrackGeometry<dim> *> crack_list;
         for (unsigned int c = 0; c < cracks.size(); ++c)
           crack_list.push_back(&cracks[c]);
@@ -184,11 +170,25 @@ namespace xcrack
   void
   ElasticityProblem<dim>::setup_system()
   {
-    TimerOutput::Scope t(*timer, "setup");
+    {
+      TimerOutput::Scope t(*timer, "setup");
+      dof_handler.reinit(triangulation);
+      if (enrichment)
+        enrichment->set_fe_indices(dof_handler);
+    }
+    // The level-set fields follow the enrichment's fit-to-vertex shifts;
+    // gathering ties the branch DoFs along the fronts they give.
+    update_level_sets();
+    std::vector<std::vector<std::vector<FrontPoint<dim>>>> fronts;
+    if (enrichment && enrichment->get_parameters().gather)
+      for (unsigned int c = 0; c < cracks.size(); ++c)
+        {
+          CrackSurface<dim> surface;
+          surface.extract(level_sets, c);
+          fronts.push_back(surface.fronts());
+        }
 
-    dof_handler.reinit(triangulation);
-    if (enrichment)
-      enrichment->set_fe_indices(dof_handler);
+    TimerOutput::Scope t(*timer, "setup");
     dof_handler.distribute_dofs(fe_collection);
     enriched_dofs      = (enrichment ? enrichment->enriched_dofs(dof_handler) :
                                        IndexSet(dof_handler.n_dofs()));
@@ -199,17 +199,22 @@ namespace xcrack
     constraints.reinit(locally_relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     if (enrichment)
-      enrichment->make_constraints(dof_handler, constraints);
+      enrichment->make_constraints(dof_handler, constraints, fronts);
 
     make_dirichlet_constraints();
     constraints.close();
 
-    DynamicSparsityPattern dsp(locally_relevant_dofs);
+    // Gathered DoFs are tied to masters that may be owned by another rank
+    // and lie outside the relevant set: assembly writes to their rows too.
+    IndexSet rows = locally_relevant_dofs;
+    if (enrichment)
+      rows.add_indices(enrichment->gathering_masters());
+    DynamicSparsityPattern dsp(rows);
     DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
     SparsityTools::distribute_sparsity_pattern(dsp,
                                                locally_owned_dofs,
                                                mpi_communicator,
-                                               locally_relevant_dofs);
+                                               rows);
     system_matrix.reinit(locally_owned_dofs,
                          locally_owned_dofs,
                          dsp,
@@ -1105,10 +1110,9 @@ namespace xcrack
         // The level-set fields give the crack as the mesh sees it (lips and
         // front, written and reported below); the enrichment still reads the
         // analytic geometry, which the fields interpolate (after the shifts
-        // of fit to vertex, hence after the setup). Propagation will update
-        // the fields every step.
+        // of fit to vertex: setup_system() updates them). Propagation will
+        // update the fields every step.
         setup_system();
-        update_level_sets();
         assemble_system();
         const unsigned int iterations = solve();
 
@@ -1146,6 +1150,12 @@ namespace xcrack
                   << l2 << ", energy error " << energy << std::defaultfloat;
           }
         pcout << std::endl;
+        if (enrichment && enrichment->get_parameters().gather)
+          {
+            const auto n_masters = enrichment->gathering_masters().n_elements();
+            pcout << "  gathering: " << n_masters / (4 * dim) << " masters, "
+                  << n_masters << " branch unknowns" << std::endl;
+          }
         if (enrichment)
           report_crack_surface();
         if (enrichment && fracture_parameters.compute)

@@ -314,8 +314,12 @@ namespace xcrack
                             fe.system_to_component_index(j).first != c)
                           continue;
                         partners.insert(dofs[j]);
+                        // A gathered DoF stays itself: its tie to the
+                        // masters is resolved when the constraints close.
                         const types::global_dof_index a =
-                          free_copy(constraints, dofs[j]);
+                          (enrichment.gathered().is_element(dofs[j]) ?
+                             dofs[j] :
+                             free_copy(constraints, dofs[j]));
                         if (a == numbers::invalid_dof_index ||
                             std::find(node.enriched.begin(),
                                       node.enriched.end(),

@@ -60,9 +60,6 @@ two_cracks() {
 }
 expect_error cracks_too_close "Cracks/Crack 1 and Crack 2: their enriched zones meet near" \
   < <(two_cracks "0.6, 0.45" "0.9, 0.45")
-expect_error gather_two_cracks "Gather tip DoFs = true ties the DoFs of one tip zone: it needs a single crack" \
-  < <(two_cracks "0.7, 0.45" "0.9, 0.45" | sed 's/set End point = 0.4, 0.45/set End point = 0.3, 0.45\n    set Tips = end/';
-      printf 'subsection Enrichment\n  set Tip enrichment = geometric\n  set Enrichment radius = 0.1\n  set Gather tip DoFs = true\nend\n')
 
 [ "$snapshot" = "$(cd out && ls -l --time-style=full-iso && md5sum ./*)" ] ||
   fail "a failed start changed the earlier results in out/"

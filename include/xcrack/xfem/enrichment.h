@@ -12,6 +12,7 @@
 #include <xcrack/crack/crack_geometry.h>
 #include <xcrack/xfem/branch_functions.h>
 #include <xcrack/xfem/fitted_crack.h>
+#include <xcrack/xfem/front_gathering.h>
 
 #include <array>
 #include <map>
@@ -76,6 +77,9 @@ namespace xcrack
     double       radius                = 0;
     unsigned int tip_quadrature_points = 6;
     bool         gather                = false;
+    /// Gathering: master spacing along a 3D front, in multiples of the
+    /// largest tip cell's diameter.
+    double gather_segment = 2;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -137,10 +141,14 @@ namespace xcrack
    * the crack beyond the volume tolerance, no tip cell), also inside the
    * tip zone.
    *
-   * DOF gathering (`Gather tip DoFs`, 2D, one rank): the branch DoFs of
-   * each function and component are tied to one over the tip zone, so the
-   * zone carries F_k itself (times a partition of unity that is one inside
-   * it) at the cost of 4 x dim unknowns.
+   * DOF gathering (`Gather tip DoFs`): the branch DoFs of each function
+   * and component are tied, over the tip zone, to those of a few master
+   * nodes along each front (FrontGathering: one per 2D tip, one about every
+   * `Gather segment length` along a 3D front, linear in between), so the
+   * zone carries F_k chi times a coefficient that varies along the front,
+   * at the cost of 4 x dim unknowns per master instead of per node. The
+   * masters are picked the same on every rank; their DoFs may be owned
+   * elsewhere (gathering_masters(): the sparsity pattern needs their rows).
    *
    * Fit to vertex (`Fit to vertex tolerance` tau > 0): where the crack
    * passes within tau times the shortest adjacent edge of a vertex (on
@@ -163,8 +171,7 @@ namespace xcrack
    * place (on every rank), rather than silently dropping one crack's
    * functions; refining between the cracks separates the zones.
    *
-   * Not yet: gathering in 3D (per front segment), on several ranks and with
-   * several cracks; shifted enrichment; crossing or
+   * Not yet: shifted enrichment; crossing or
    * branching cracks (overlapping zones).
    */
   template <int dim>
@@ -180,7 +187,7 @@ namespace xcrack
 
     /**
      * Enrich the displacement space of degree @p degree by @p cracks (not
-     * owned; they must outlive this object). Gathering needs one crack.
+     * owned; they must outlive this object).
      */
     Enrichment(const std::vector<const CrackGeometry<dim> *> &cracks,
                const unsigned int                             degree,
@@ -206,12 +213,27 @@ namespace xcrack
 
     /**
      * Add to @p constraints the zero constraints of the enriched DoFs that
-     * are not enriched, and with gathering the ties of the branch DoFs.
-     * Call after the hanging-node constraints and before the Dirichlet ones.
+     * are not enriched, and with gathering the ties of the branch DoFs to
+     * masters along @p fronts (per crack, as CrackSurface::fronts() gives
+     * them; only read with gathering). Call after the hanging-node
+     * constraints and before the Dirichlet ones (collective).
      */
     void
-    make_constraints(const DoFHandler<dim>     &dof_handler,
-                     AffineConstraints<double> &constraints) const;
+    make_constraints(
+      const DoFHandler<dim>                                        &dof_handler,
+      AffineConstraints<double>                                    &constraints,
+      const std::vector<std::vector<std::vector<FrontPoint<dim>>>> &fronts =
+        {});
+
+    /**
+     * With gathering, after make_constraints(): the branch DoFs tied to
+     * masters (those of owned cells), and the masters' DoFs (all of them,
+     * on every rank; rows of the matrix that assembly writes to).
+     */
+    const IndexSet &
+    gathered() const;
+    const IndexSet &
+    gathering_masters() const;
 
     /// Whether local DoF @p i of @p fe is an enriched one.
     static bool
@@ -298,6 +320,13 @@ namespace xcrack
     static unsigned int
     slot(const FiniteElement<dim> &fe, const unsigned int i);
 
+    /// The gathering part of make_constraints().
+    void
+    gather_branch_dofs(
+      const DoFHandler<dim>                                        &dof_handler,
+      const std::vector<std::vector<std::vector<FrontPoint<dim>>>> &fronts,
+      AffineConstraints<double> &constraints);
+
     /// lsn (@p normal) or lst of crack @p c at the vertices of @p cell.
     std::vector<double>
     vertex_values(const typename Triangulation<dim>::cell_iterator &cell,
@@ -352,6 +381,10 @@ namespace xcrack
     std::map<unsigned int, FittedCell> fitted_cells;
     hp::FECollection<dim>              fe_collection;
     std::vector<CellKind>              cell_kind;
+    /// Gathering (make_constraints()): per crack, the fronts' partitions.
+    std::vector<FrontGathering<dim>> gathering;
+    IndexSet                         gathered_dofs;
+    IndexSet                         master_dofs;
     /// The crack each cell evaluates (crack_index()).
     std::vector<unsigned char> cell_crack;
     /// Fraction of each cell's volume on the negative side of each crack
