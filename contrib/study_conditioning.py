@@ -16,6 +16,10 @@ A second table tilts the crack (slope 0.3) so that it passes delta from
 one node (and 0.1 h or more from the others): the condition number for
 several fit-to-vertex tolerances.
 
+A third table takes BENCHMARKS.md Case 1 (prm/benchmarks/exact_mode_I_2d.prm)
+on its first three meshes: the condition number against h for a geometric
+tip zone, with and without DOF gathering.
+
     contrib/build.sh release
     python3 contrib/study_conditioning.py
 """
@@ -71,6 +75,34 @@ end
     return row
 
 
+def case1(work, cycles, zone, radius, gather):
+    """Last row of statistics.csv of Case 1 in 2D with the given zone."""
+    prm = os.path.join(work, "run.prm")
+    with open(prm, "w") as f:
+        f.write(f"""include {top}/prm/benchmarks/exact_mode_I_2d.prm
+set Output directory = {work}/out
+subsection Output
+  set Timing summary = false
+  set Condition number up to dofs = 5000
+end
+subsection Fracture parameters
+  set Compute = false
+end
+subsection Mesh refinement
+  set Number of cycles = {cycles}
+end
+subsection Enrichment
+  set Tip enrichment = {zone}
+  set Enrichment radius = {radius}
+  set Gather tip DoFs = {str(gather).lower()}
+end
+""")
+    subprocess.run([xcrack, prm], check=True, stdout=subprocess.DEVNULL,
+                   stderr=subprocess.DEVNULL)
+    with open(os.path.join(work, "out", "statistics.csv")) as f:
+        return list(csv.DictReader(f))
+
+
 def main():
     print("| delta / h | enriched DoFs (tol 0) | condition number (tol 0) | "
           "L2 error (tol 0) | enriched DoFs (tol 1e-9) | condition number "
@@ -107,6 +139,21 @@ def main():
             row = [run(delta, 1e-9, work, fit, slope=0.3) for fit in fits]
             print(f"| 1e-{exponent} | " + " | ".join(
                 f"{float(r['condition_number']):.2e}" for r in row) + " |")
+
+        print("\nCase 1 (2D), condition number on the first meshes "
+              "(h = 1/4, 1/8, 1/16), free enriched DoFs in brackets:\n")
+        zones = [("topological", 0, False), ("geometric", 0.25, False),
+                 ("geometric", 0.25, True), ("geometric", 0.5, False),
+                 ("geometric", 0.5, True)]
+        print("| zone | h = 1/4 | h = 1/8 | h = 1/16 |")
+        print("|---|---|---|---|")
+        for zone, radius, gather in zones:
+            rows = case1(work, 3, zone, radius, gather)
+            label = zone + (f" r = {radius}" if radius else "") + \
+                (", gathered" if gather else "")
+            print(f"| {label} | " + " | ".join(
+                f"{float(r['condition_number']):.2e} ({r['enriched_dofs']})"
+                for r in rows) + " |")
 
 
 if __name__ == "__main__":

@@ -4,7 +4,7 @@
 On BENCHMARKS.md Case 1 (prm/benchmarks/exact_mode_I_2d.prm, and the 3D
 version on two ranks) this sweeps the enrichment radius (topological, then
 geometric radii in multiples of the cell size h and fixed), the points per
-direction of the tip rule, and the degree, and prints for each choice the
+direction of the tip rule, DOF gathering, and the degree, and prints for each choice the
 relative energy error, the enriched DoFs and the wall time of setup +
 assembly + solve (median of --runs runs). The X-FEM overhead is the solve
 time divided by that of the uncracked body on the same mesh (same boundary
@@ -34,10 +34,11 @@ def run(work, benchmark, cycles, entries, ranks, repeats):
     return result
 
 
-def enrichment(zone, radius=0.0, points=6, degree=1):
+def enrichment(zone, radius=0.0, points=6, degree=1, gather=False):
     return ("subsection Enrichment\n"
             f"  set Tip enrichment = {zone}\n  set Enrichment radius = {radius}\n"
-            f"  set Tip quadrature points = {points}\nend\n"
+            f"  set Tip quadrature points = {points}\n"
+            f"  set Gather tip DoFs = {str(gather).lower()}\nend\n"
             f"subsection Discretization\n  set Degree = {degree}\nend\n")
 
 
@@ -64,6 +65,9 @@ def study(work, benchmark, cycles, ranks, repeats, h):
     for p in (3, 10):
         choices.append((f"geometric r = 0.25, tip rule {p} points",
                         enrichment("geometric", 0.25, p)))
+    for r in (0.25, 0.5) + ((0.9,) if dim == 2 else ()):
+        choices.append((f"gathered, r = {r}",
+                        enrichment("geometric", r, gather=True)))
     if dim == 2:
         choices.append(("Q2, topological", enrichment("topological", degree=2)))
         choices.append(("Q2, geometric r = 0.25",
