@@ -404,6 +404,43 @@ namespace xcrack
             }
         }
     }
+
+
+
+    /**
+     * The crack-tip frame at @p x as the branch functions see it: rows e1 =
+     * grad lst, e2 = grad lsn made normal to e1, and in 3D e3 = e1 x e2
+     * (central differences, as BranchFunction's gradient). Smooth along
+     * the front and across the tip zone, which is what DOF gathering needs
+     * of it.
+     */
+    template <int dim>
+    Tensor<2, dim>
+    tip_frame(const CrackGeometry<dim> &crack, const Point<dim> &x)
+    {
+      double scale = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        scale = std::max(scale, std::abs(x[d]));
+      const double   h = 1e-6 * scale;
+      Tensor<1, dim> e1, e2;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          Point<dim> plus = x, minus = x;
+          plus[d] += h;
+          minus[d] -= h;
+          e1[d] = crack.lst(plus) - crack.lst(minus);
+          e2[d] = crack.lsn(plus) - crack.lsn(minus);
+        }
+      e1 /= e1.norm();
+      e2 -= (e2 * e1) * e1;
+      e2 /= e2.norm();
+      Tensor<2, dim> frame;
+      frame[0] = e1;
+      frame[1] = e2;
+      if constexpr (dim == 3)
+        frame[2] = cross_product_3d(e1, e2);
+      return frame;
+    }
   } // namespace
 
 
@@ -1167,6 +1204,7 @@ namespace xcrack
       unsigned int                                crack    = 0;
       bool                                        boundary = false;
       Point<dim>                                  position;
+      Tensor<2, dim>                              frame;
     };
     std::map<unsigned int, Node>         nodes; // by vertex index
     std::vector<types::global_dof_index> dofs;
@@ -1191,6 +1229,7 @@ namespace xcrack
                     node.dofs.fill(numbers::invalid_dof_index);
                     node.crack    = crack_index(cell);
                     node.position = cell->vertex(v);
+                    node.frame = tip_frame(*cracks[node.crack], node.position);
                   }
                 const auto &outer = fe.system_to_base_index(i);
                 const auto &inner = fe.base_element(outer.first.first)
@@ -1199,17 +1238,9 @@ namespace xcrack
                   node.dofs[inner.first.second * dim +
                             fe.system_to_component_index(i).first] = dofs[i];
               }
-          for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary())
-              for (const unsigned int v : cell->face(f)->vertex_indices())
-                {
-                  const auto it = nodes.find(cell->face(f)->vertex_index(v));
-                  if (it != nodes.end())
-                    it->second.boundary = true;
-                }
         }
-    // A vertex on the boundary may be met first from a cell without a
-    // boundary face: mark again over the ghost cells too.
+    // Vertices on the boundary, seen from any owned or ghost cell (a
+    // vertex of an owned cell may touch the boundary only through a ghost).
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial() && cell->at_boundary())
         for (const unsigned int f : cell->face_indices())
@@ -1243,6 +1274,7 @@ namespace xcrack
     std::vector<double>                  score(targets.size(),
                               std::numeric_limits<double>::max());
     std::vector<double>                  abscissa(targets.size(), 0.);
+    std::vector<double>                  position(targets.size() * dim, 0.);
     std::vector<types::global_dof_index> candidate(targets.size() * n_keys,
                                                    numbers::invalid_dof_index);
     std::map<unsigned int, typename FrontGathering<dim>::Location> location;
@@ -1271,6 +1303,8 @@ namespace xcrack
                 {
                   score[t]    = d;
                   abscissa[t] = where.s;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    position[t * dim + d] = node.position[d];
                   std::copy(node.dofs.begin(),
                             node.dofs.end(),
                             candidate.begin() + t * n_keys);
@@ -1279,6 +1313,7 @@ namespace xcrack
       }
     const auto all_scores    = Utilities::MPI::all_gather(comm, score);
     const auto all_abscissae = Utilities::MPI::all_gather(comm, abscissa);
+    const auto all_positions = Utilities::MPI::all_gather(comm, position);
     const auto all_dofs      = Utilities::MPI::all_gather(comm, candidate);
 
     // Per crack and front: the chosen masters by abscissa, without repeats
@@ -1287,6 +1322,7 @@ namespace xcrack
     std::vector<std::vector<std::map<double, unsigned int>>> chosen(
       cracks.size());
     std::vector<std::array<types::global_dof_index, n_keys>> master;
+    std::vector<Tensor<2, dim>>                              master_frame;
     for (unsigned int c = 0; c < cracks.size(); ++c)
       chosen[c].resize(gathering[c].n_fronts());
     for (unsigned int t = 0; t < targets.size(); ++t)
@@ -1310,6 +1346,10 @@ namespace xcrack
         if (!apart)
           continue;
         on_front.emplace(s, master.size());
+        Point<dim> x;
+        for (unsigned int d = 0; d < dim; ++d)
+          x[d] = all_positions[best][t * dim + d];
+        master_frame.push_back(tip_frame(*cracks[targets[t].crack], x));
         master.emplace_back();
         std::copy(all_dofs[best].begin() + t * n_keys,
                   all_dofs[best].begin() + (t + 1) * n_keys,
@@ -1325,9 +1365,9 @@ namespace xcrack
         {
           std::vector<double>       s;
           std::vector<unsigned int> m;
-          for (const auto &[abscissa, index] : chosen[c][f])
+          for (const auto &[s_master, index] : chosen[c][f])
             {
-              s.push_back(abscissa);
+              s.push_back(s_master);
               m.push_back(index);
             }
           check_input(!s.empty(),
@@ -1341,7 +1381,17 @@ namespace xcrack
           masters_of[c].push_back(m);
         }
 
-    // The ties: every other free branch DoF of the zone.
+    // The ties: every other free branch DoF of the zone. The coefficients
+    // are interpolated in the tip frame, not component by component: the
+    // DoFs of function k at node j (its dim components, a vector a_j) take
+    // R_j^T sum_m phi_m(s_j) R_m A_m, R the frames (rows e1, e2, e3). Along
+    // a curved front the global components of one local coefficient (K(s)
+    // in the local frame) turn with the frame, which linear interpolation
+    // of the components between masters does not follow. Measured on the
+    // penny (fifth mesh) with 4 masters around the front: K_I error 3.15 %
+    // against 3.37 % component-wise; with 14 masters the two agree (the
+    // crowns lie mostly beyond the zone). Frames equal up to the
+    // differences' round-off (a straight front) give the identity.
     for (const auto &[vertex, node] : nodes)
       {
         const auto &where = location[vertex];
@@ -1352,13 +1402,24 @@ namespace xcrack
             if (dof == numbers::invalid_dof_index ||
                 master_dofs.is_element(dof))
               continue;
+            const unsigned int k = key / dim, c = key % dim;
             constraints.add_line(dof);
             gathered_dofs.add_index(dof);
-            for (const auto &[k, weight] : w)
-              constraints.add_entry(
-                dof,
-                master[masters_of[node.crack][where.front][k]][key],
-                weight);
+            for (const auto &[index, weight] : w)
+              {
+                const unsigned int m =
+                  masters_of[node.crack][where.front][index];
+                const Tensor<2, dim> rotation =
+                  transpose(node.frame) * master_frame[m];
+                for (unsigned int c2 = 0; c2 < dim; ++c2)
+                  {
+                    const double coefficient = weight * rotation[c][c2];
+                    if (std::abs(coefficient) > 1e-8)
+                      constraints.add_entry(dof,
+                                            master[m][k * dim + c2],
+                                            coefficient);
+                  }
+              }
           }
       }
     master_dofs.compress();

@@ -38,7 +38,9 @@ namespace xcrack
    * This class only does the geometry: where a point projects, where the
    * masters should be, and the weights. Enrichment::make_constraints picks
    * the master nodes among the DoFs (the same on every rank) and writes the
-   * constraints.
+   * constraints, interpolating each function's vector of coefficients in
+   * the local crack-tip frame (rotated from the masters' frames to the
+   * node's) rather than component by component.
    */
   template <int dim>
   class FrontGathering
