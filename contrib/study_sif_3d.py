@@ -5,7 +5,7 @@ each front basis, and the cost and gain of each choice of the extraction
 (crowns, basis, front segments, tip rule) on the penny.
 
     contrib/build.sh release
-    /usr/bin/python3 contrib/study_sif_3d.py convergence [--cycles 6]
+    /usr/bin/python3 contrib/study_sif_3d.py convergence [--cycles 6] [--direct]
     /usr/bin/python3 contrib/study_sif_3d.py bases [--cycles 6] [--jobs 2]
     /usr/bin/python3 contrib/study_sif_3d.py trade [--cycles 6] [--jobs 2]
 
@@ -42,10 +42,11 @@ benchmarks = {
 }
 
 
-def run(benchmark, cycles, work, smoothing=None, fracture="", enrichment=""):
+def run(benchmark, cycles, work, smoothing=None, fracture="", enrichment="",
+        extra=""):
     """Run a benchmark with `cycles` cycles in work/out; smoothing is
     (basis, Legendre degree, front segments); fracture and enrichment are
-    extra lines for those subsections."""
+    extra lines for those subsections, extra more parameter text."""
     text = (f"include {os.path.join(top, 'prm', 'benchmarks', benchmark)}\n"
             f"set Output directory = {os.path.join(work, 'out')}\n"
             "subsection Output\n  set Timing summary = false\nend\n"
@@ -58,7 +59,7 @@ def run(benchmark, cycles, work, smoothing=None, fracture="", enrichment=""):
         text += f"subsection Fracture parameters\n{fracture}end\n"
     if enrichment:
         text += f"subsection Enrichment\n{enrichment}end\n"
-    return run_xcrack(text, work)
+    return run_xcrack(text + extra, work)
 
 
 def front_k(work, step):
@@ -79,11 +80,19 @@ def run_choices(choices, cycles, jobs, benchmark="sif_penny_3d.prm"):
         return dict(pool.map(one, choices))
 
 
+# The shear and ellipse prms gather the tip DoFs and solve with CG + AMG to
+# reach h = 1/32; `convergence --direct` runs every benchmark as the tables
+# up to h = 1/16 were measured (no gathering, MUMPS).
+DIRECT = ("subsection Enrichment\n  set Gather tip DoFs = false\nend\n"
+          "subsection Linear solver\n  set Type = direct\nend\n")
+
+
 def convergence(args):
     table = {}
     with tempfile.TemporaryDirectory() as work:
         for name, benchmark in benchmarks.items():
-            rows = run(benchmark, args.cycles, work)
+            rows = run(benchmark, args.cycles, work, extra=(DIRECT if args.direct
+                                                            else ""))
             table[name] = rows
             print(f"\n{name} ({benchmark})\n")
             print("| cycle | DoFs | K_I error | K_II error | K_III error | "
@@ -227,6 +236,8 @@ def main():
     parser.add_argument("study", choices=["convergence", "bases", "trade"])
     parser.add_argument("--cycles", type=int, default=6)
     parser.add_argument("--jobs", type=int, default=1)
+    parser.add_argument("--direct", action="store_true",
+                        help="convergence: no gathering, direct solver")
     args = parser.parse_args()
     {"convergence": convergence, "bases": bases, "trade": trade}[args.study](
         args)
