@@ -75,6 +75,33 @@ namespace xcrack
   orient_front<3>(std::vector<FrontPoint<3>> &);
 
 
+
+  template <int dim>
+  std::pair<Tensor<1, dim>, Tensor<1, dim>>
+  level_set_gradients(const CrackGeometry<dim> &crack, const Point<dim> &p)
+  {
+    double scale = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      scale = std::max(scale, std::abs(p[d]));
+    const double   h = 1e-6 * scale;
+    Tensor<1, dim> grad_n, grad_t;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        Point<dim> plus = p, minus = p;
+        plus[d] += h;
+        minus[d] -= h;
+        grad_n[d] = (crack.lsn(plus) - crack.lsn(minus)) / (2 * h);
+        grad_t[d] = (crack.lst(plus) - crack.lst(minus)) / (2 * h);
+      }
+    return {grad_n, grad_t};
+  }
+
+  template std::pair<Tensor<1, 2>, Tensor<1, 2>>
+  level_set_gradients(const CrackGeometry<2> &, const Point<2> &);
+  template std::pair<Tensor<1, 3>, Tensor<1, 3>>
+  level_set_gradients(const CrackGeometry<3> &, const Point<3> &);
+
+
   namespace
   {
     /// The intersection of two boxes (may be empty: lower > upper).

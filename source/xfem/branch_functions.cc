@@ -106,21 +106,7 @@ namespace xcrack
     if (r == 0)
       return Tensor<1, dim>(); // singular; quadrature points avoid the front
 
-    // Central differences of the level sets, with a step relative to the
-    // size of the coordinates (smooth functions: error ~ h^2).
-    double scale = 1;
-    for (unsigned int d = 0; d < dim; ++d)
-      scale = std::max(scale, std::abs(p[d]));
-    const double   h = 1e-6 * scale;
-    Tensor<1, dim> grad_n, grad_t;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        Point<dim> plus = p, minus = p;
-        plus[d] += h;
-        minus[d] -= h;
-        grad_n[d] = (crack.lsn(plus) - crack.lsn(minus)) / (2 * h);
-        grad_t[d] = (crack.lst(plus) - crack.lst(minus)) / (2 * h);
-      }
+    const auto [grad_n, grad_t]     = level_set_gradients(crack, p);
     const auto           values     = polar_values(r, polar_angle(n, t));
     const Tensor<1, dim> grad_r     = (n * grad_n + t * grad_t) / r;
     const Tensor<1, dim> grad_theta = (t * grad_n - n * grad_t) / (r * r);

@@ -409,28 +409,15 @@ namespace xcrack
 
     /**
      * The crack-tip frame at @p x as the branch functions see it: rows e1 =
-     * grad lst, e2 = grad lsn made normal to e1, and in 3D e3 = e1 x e2
-     * (central differences, as BranchFunction's gradient). Smooth along
-     * the front and across the tip zone, which is what DOF gathering needs
-     * of it.
+     * grad lst, e2 = grad lsn made normal to e1, and in 3D e3 = e1 x e2.
+     * Smooth along the front and across the tip zone, which is what DOF
+     * gathering needs of it.
      */
     template <int dim>
     Tensor<2, dim>
     tip_frame(const CrackGeometry<dim> &crack, const Point<dim> &x)
     {
-      double scale = 1;
-      for (unsigned int d = 0; d < dim; ++d)
-        scale = std::max(scale, std::abs(x[d]));
-      const double   h = 1e-6 * scale;
-      Tensor<1, dim> e1, e2;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          Point<dim> plus = x, minus = x;
-          plus[d] += h;
-          minus[d] -= h;
-          e1[d] = crack.lst(plus) - crack.lst(minus);
-          e2[d] = crack.lsn(plus) - crack.lsn(minus);
-        }
+      auto [e2, e1] = level_set_gradients(crack, x);
       e1 /= e1.norm();
       e2 -= (e2 * e1) * e1;
       e2 /= e2.norm();

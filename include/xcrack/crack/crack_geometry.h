@@ -115,6 +115,19 @@ namespace xcrack
 
 
   /**
+   * The gradients of @p crack's level sets at @p p: (grad lsn, grad lst),
+   * by central differences with a step of 1e-6 of the size of the
+   * coordinates (the level sets are smooth near a front: error ~ step^2).
+   * The branch functions' derivatives and the tip frame of DOF gathering
+   * both need them.
+   */
+  template <int dim>
+  std::pair<Tensor<1, dim>, Tensor<1, dim>>
+  level_set_gradients(const CrackGeometry<dim> &crack, const Point<dim> &p);
+
+
+
+  /**
    * A straight 2D crack from @p start to @p end. Each end is a tip unless it
    * is declared a mouth (an end on or outside the boundary of the body, as
    * for an edge crack). The normal is the direction end - start rotated by
