@@ -13,6 +13,7 @@
 #include <xcrack/input_error.h>
 #include <xcrack/xfem/cell_quadrature.h>
 #include <xcrack/xfem/enrichment.h>
+#include <xcrack/xfem/front_gathering.h>
 
 #include <algorithm>
 #include <array>
@@ -1241,7 +1242,8 @@ namespace xcrack
     largest_tip_cell     = Utilities::MPI::max(largest_tip_cell, comm);
     const double spacing = parameters.gather_segment * largest_tip_cell;
 
-    gathering.clear();
+    // Per crack, the partition of its fronts.
+    std::vector<FrontGathering<dim>> gathering;
     for (unsigned int c = 0; c < cracks.size(); ++c)
       gathering.emplace_back(fronts[c]);
 

@@ -12,7 +12,6 @@
 #include <xcrack/crack/crack_geometry.h>
 #include <xcrack/xfem/branch_functions.h>
 #include <xcrack/xfem/fitted_crack.h>
-#include <xcrack/xfem/front_gathering.h>
 
 #include <array>
 #include <map>
@@ -381,10 +380,9 @@ namespace xcrack
     std::map<unsigned int, FittedCell> fitted_cells;
     hp::FECollection<dim>              fe_collection;
     std::vector<CellKind>              cell_kind;
-    /// Gathering (make_constraints()): per crack, the fronts' partitions.
-    std::vector<FrontGathering<dim>> gathering;
-    IndexSet                         gathered_dofs;
-    IndexSet                         master_dofs;
+    /// Gathering (make_constraints()): the tied DoFs and the masters'.
+    IndexSet gathered_dofs;
+    IndexSet master_dofs;
     /// The crack each cell evaluates (crack_index()).
     std::vector<unsigned char> cell_crack;
     /// Fraction of each cell's volume on the negative side of each crack
