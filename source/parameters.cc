@@ -1,13 +1,12 @@
 #include <xcrack/boundary_conditions.h>
 #include <xcrack/crack/crack_set.h>
-#include <xcrack/elasticity.h>
 #include <xcrack/exact_solution.h>
 #include <xcrack/input_error.h>
 #include <xcrack/linear_solver.h>
 #include <xcrack/material.h>
 #include <xcrack/mesh.h>
 #include <xcrack/parameters.h>
-#include <xcrack/refinement.h>
+#include <xcrack/simulator.h>
 
 #include <fstream>
 #include <sstream>
@@ -106,10 +105,9 @@ namespace xcrack
     Material::declare_parameters(prm);
     // The declarations do not depend on the dimension.
     BoundaryConditions<3>::declare_parameters(prm);
-    Refinement<3>::declare_parameters(prm);
     CrackSet<3>::declare_parameters(prm);
     LinearSolver::declare_parameters(prm);
-    ElasticityProblem<3>::declare_parameters(prm);
+    Simulator<3>::declare_parameters(prm);
     ExactSolution::declare_parameters(prm);
   }
 

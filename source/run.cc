@@ -1,4 +1,4 @@
-#include <xcrack/elasticity.h>
+#include <xcrack/simulator.h>
 #include <xcrack/run.h>
 
 namespace xcrack
@@ -8,12 +8,12 @@ namespace xcrack
   {
     if (prm.get_integer("Dimension") == 2)
       {
-        ElasticityProblem<2> problem(prm);
+        Simulator<2> problem(prm);
         problem.run();
       }
     else
       {
-        ElasticityProblem<3> problem(prm);
+        Simulator<3> problem(prm);
         problem.run();
       }
   }

@@ -8,8 +8,8 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <xcrack/elasticity.h>
 #include <xcrack/parameters.h>
+#include <xcrack/simulator.h>
 
 #include <cmath>
 #include <fstream>
@@ -25,7 +25,7 @@ yes(const bool b)
 }
 
 const xcrack::Statistics &
-run(const double radius, std::unique_ptr<xcrack::ElasticityProblem<2>> &p)
+run(const double radius, std::unique_ptr<xcrack::Simulator<2>> &p)
 {
   ParameterHandler prm;
   xcrack::declare_all_parameters(prm);
@@ -37,7 +37,7 @@ run(const double radius, std::unique_ptr<xcrack::ElasticityProblem<2>> &p)
     "subsection Mesh refinement\n set Number of cycles = 2\nend\n"
     "subsection Enrichment\n set Enrichment radius = " +
       std::to_string(radius) + "\nend\n");
-  p = std::make_unique<xcrack::ElasticityProblem<2>>(prm, MPI_COMM_WORLD);
+  p = std::make_unique<xcrack::Simulator<2>>(prm, MPI_COMM_WORLD);
   p->run();
   return p->get_statistics();
 }
@@ -45,10 +45,10 @@ run(const double radius, std::unique_ptr<xcrack::ElasticityProblem<2>> &p)
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize              mpi(argc, argv, 1);
-  std::unique_ptr<xcrack::ElasticityProblem<2>> everywhere, zone;
-  const auto                                   &all  = run(10, everywhere);
-  const auto                                   &part = run(0.25, zone);
+  Utilities::MPI::MPI_InitFinalize      mpi(argc, argv, 1);
+  std::unique_ptr<xcrack::Simulator<2>> everywhere, zone;
+  const auto                           &all  = run(10, everywhere);
+  const auto                           &part = run(0.25, zone);
   for (unsigned int r = 0; r < all.n_rows(); ++r)
     logfile << "cycle " << r << ": " << all.get("cells", r)
             << " cells, every node enriched: energy error below 1e-4 "

@@ -13,8 +13,8 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <xcrack/elasticity.h>
 #include <xcrack/parameters.h>
+#include <xcrack/simulator.h>
 
 #include <cmath>
 #include <fstream>
@@ -52,12 +52,12 @@ input(const Case &c, const bool with_crack)
     << "\n set Strategy = region\n";
   if (c.dim == 2)
     in
-      << " set Region = 0.2 - abs(x - 0.5)\nend\n"
+      << " subsection Region\n  set Region = 0.2 - abs(x - 0.5)\n end\nend\n"
       << "subsection Mesh\n set Subdivisions = 8, 8\nend\n"
       << "subsection Boundary conditions\n set Dirichlet = 2: 0; 0 | 3: 0.01; 0.1\nend\n";
   else
     in
-      << " set Region = 0.15 - abs(z - 0.31 - 0.1*x - 0.05*y)\nend\n"
+      << " subsection Region\n  set Region = 0.15 - abs(z - 0.31 - 0.1*x - 0.05*y)\n end\nend\n"
       << "subsection Mesh\n set Upper corner = 1, 1, 1\n set Subdivisions = 4, 4, 4\nend\n"
       << "subsection Boundary conditions\n"
       << " set Dirichlet = 4: 0; 0; 0 | 5: 0.01; -0.02; 0.1\nend\n";
@@ -84,14 +84,14 @@ input(const Case &c, const bool with_crack)
 
 template <int dim>
 const xcrack::Statistics &
-run(const std::string                               &text,
-    std::unique_ptr<xcrack::ElasticityProblem<dim>> &p,
-    const MPI_Comm                                   comm = MPI_COMM_WORLD)
+run(const std::string                       &text,
+    std::unique_ptr<xcrack::Simulator<dim>> &p,
+    const MPI_Comm                           comm = MPI_COMM_WORLD)
 {
   ParameterHandler prm;
   xcrack::declare_all_parameters(prm);
   xcrack::read_parameter_string(prm, text);
-  p = std::make_unique<xcrack::ElasticityProblem<dim>>(prm, comm);
+  p = std::make_unique<xcrack::Simulator<dim>>(prm, comm);
   p->run();
   return p->get_statistics();
 }
@@ -100,7 +100,7 @@ template <int dim>
 void
 check(const Case &c)
 {
-  std::unique_ptr<xcrack::ElasticityProblem<dim>> problem, plain_problem;
+  std::unique_ptr<xcrack::Simulator<dim>> problem, plain_problem;
   const auto &stats = run<dim>(input(c, true), problem);
   for (unsigned int r = 0; r < stats.n_rows(); ++r)
     logfile << c.name << ", cycle " << r << ": " << stats.get("cells", r)
@@ -163,7 +163,7 @@ check_near_nodes()
          << " subsection Crack 1\n  set Start point = -0.1, " << y.str()
          << "\n  set End point = 1.1, " << y.str()
          << "\n  set Tips = none\n end\nend\n";
-      std::unique_ptr<xcrack::ElasticityProblem<2>> problem;
+      std::unique_ptr<xcrack::Simulator<2>> problem;
       const auto &stats = run<2>(in.str(), problem, MPI_COMM_SELF);
       logfile << "crack at " << offset << " from a row of nodes (h = 0.125)"
               << (fit > 0 ?
@@ -188,24 +188,25 @@ check_fitted_3d()
 {
   const std::string  side = "z >= 0.5";
   std::ostringstream in;
-  in << "set Dimension = 3\nset Output directory = results\n"
-     << "subsection Output\n set Write vtu = false\n"
-     << " set Timing summary = false\nend\n"
-     << "subsection Mesh\n set Upper corner = 1, 1, 1\n"
-     << " set Subdivisions = 4, 4, 4\nend\n"
-     << "subsection Mesh refinement\n set Number of cycles = 3\n"
-     << " set Strategy = region\n set Region = 0.3 - x - abs(z - 0.5)\nend\n"
-     << "subsection Boundary conditions\n"
-     << " set Dirichlet = 4: 0; 0; 0 | 5: 0.01; -0.02; 0.1\nend\n"
-     << "subsection Exact solution\n set Displacement = " << side
-     << " ? 0.01 : 0; " << side << " ? -0.02 : 0; " << side
-     << " ? 0.1 : 0\nend\n"
-     << "subsection Enrichment\n set Fit to vertex tolerance = 0.01\nend\n"
-     << "subsection Cracks\n set Number of cracks = 1\n subsection Crack 1\n"
-     << "  set Shape = penny\n  set Center = 0, 0, 0.5\n"
-     << "  set Normal = 1e-4, 5e-5, 1\n  set Radius = 10\n end\nend\n";
-  std::unique_ptr<xcrack::ElasticityProblem<3>> problem;
-  const auto &stats = run<3>(in.str(), problem);
+  in
+    << "set Dimension = 3\nset Output directory = results\n"
+    << "subsection Output\n set Write vtu = false\n"
+    << " set Timing summary = false\nend\n"
+    << "subsection Mesh\n set Upper corner = 1, 1, 1\n"
+    << " set Subdivisions = 4, 4, 4\nend\n"
+    << "subsection Mesh refinement\n set Number of cycles = 3\n"
+    << " set Strategy = region\n subsection Region\n  set Region = 0.3 - x - abs(z - 0.5)\n end\nend\n"
+    << "subsection Boundary conditions\n"
+    << " set Dirichlet = 4: 0; 0; 0 | 5: 0.01; -0.02; 0.1\nend\n"
+    << "subsection Exact solution\n set Displacement = " << side
+    << " ? 0.01 : 0; " << side << " ? -0.02 : 0; " << side
+    << " ? 0.1 : 0\nend\n"
+    << "subsection Enrichment\n set Fit to vertex tolerance = 0.01\nend\n"
+    << "subsection Cracks\n set Number of cracks = 1\n subsection Crack 1\n"
+    << "  set Shape = penny\n  set Center = 0, 0, 0.5\n"
+    << "  set Normal = 1e-4, 5e-5, 1\n  set Radius = 10\n end\nend\n";
+  std::unique_ptr<xcrack::Simulator<3>> problem;
+  const auto                           &stats = run<3>(in.str(), problem);
   for (unsigned int r = 0; r < stats.n_rows(); ++r)
     logfile << "3D Q1, crack tilted 1e-4 off a node plane, fit to vertex "
             << "0.01, cycle " << r << ": " << stats.get("cells", r)

@@ -7,9 +7,9 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <xcrack/elasticity.h>
 #include <xcrack/input_error.h>
 #include <xcrack/parameters.h>
+#include <xcrack/simulator.h>
 
 #include <fstream>
 #include <regex>
@@ -76,9 +76,9 @@ check(const std::string &what, const std::string &input)
       xcrack::declare_all_parameters(prm);
       xcrack::read_parameter_string(prm, input);
       if (prm.get_integer("Dimension") == 2)
-        xcrack::ElasticityProblem<2> problem(prm);
+        xcrack::Simulator<2> problem(prm);
       else
-        xcrack::ElasticityProblem<3> problem(prm);
+        xcrack::Simulator<3> problem(prm);
       logfile << "accepted" << std::endl;
     }
   catch (const xcrack::InputError &e)
@@ -171,7 +171,7 @@ main(int argc, char **argv)
                 "  set Generator arguments = 0 : 1"));
   check("bad refinement region",
         valid + "subsection Mesh refinement\n  set Strategy = region\n"
-                "  set Region = 0.1 - r\nend\n");
+                "  subsection Region\n    set Region = 0.1 - r\n  end\nend\n");
   check("valid crack (edge crack from the left face)",
         with_crack("set Start point = -1, 0.5\nset End point = 0.7, 0.5\n"
                    "set Tips = end"));

@@ -18,8 +18,8 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <xcrack/elasticity.h>
 #include <xcrack/parameters.h>
+#include <xcrack/simulator.h>
 
 #include <cmath>
 #include <fstream>
@@ -38,12 +38,12 @@ yes(const bool b)
 
 template <int dim>
 const xcrack::Statistics &
-run(const std::string &text, std::unique_ptr<xcrack::ElasticityProblem<dim>> &p)
+run(const std::string &text, std::unique_ptr<xcrack::Simulator<dim>> &p)
 {
   ParameterHandler prm;
   xcrack::declare_all_parameters(prm);
   xcrack::read_parameter_string(prm, text);
-  p = std::make_unique<xcrack::ElasticityProblem<dim>>(prm, MPI_COMM_WORLD);
+  p = std::make_unique<xcrack::Simulator<dim>>(prm, MPI_COMM_WORLD);
   p->run();
   return p->get_statistics();
 }
@@ -96,9 +96,9 @@ check_split(const unsigned int degree, const unsigned int cycles)
        << "  set Center = 0, 0, " << c << "\n  set Normal = 0, 0, 1\n"
        << " end\nend\n";
 
-  std::unique_ptr<xcrack::ElasticityProblem<dim>> problem;
-  const auto  &stats   = run<dim>(in.str(), problem);
-  const double opening = 2 * p / p_modulus;
+  std::unique_ptr<xcrack::Simulator<dim>> problem;
+  const auto                             &stats   = run<dim>(in.str(), problem);
+  const double                            opening = 2 * p / p_modulus;
   for (unsigned int r = 0; r < stats.n_rows(); ++r)
     logfile << dim << "D Q" << degree << " split crack, cycle " << r << ": "
             << stats.get("cells", r)
@@ -142,10 +142,10 @@ check_superposition()
        << "  set End point = 0.3, 0.05\n end\nend\n";
     return in.str();
   };
-  std::unique_ptr<xcrack::ElasticityProblem<2>> a, b;
-  const auto &pressure = run<2>(input(true), a);
-  const auto &remote   = run<2>(input(false), b);
-  double      previous = 1;
+  std::unique_ptr<xcrack::Simulator<2>> a, b;
+  const auto                           &pressure = run<2>(input(true), a);
+  const auto                           &remote   = run<2>(input(false), b);
+  double                                previous = 1;
   for (unsigned int r = 0; r < pressure.n_rows(); ++r)
     {
       const double difference = std::abs(pressure.get("max_opening", r) -

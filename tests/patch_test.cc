@@ -6,8 +6,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <xcrack/elasticity.h>
 #include <xcrack/parameters.h>
+#include <xcrack/simulator.h>
 
 #include <fstream>
 #include <iomanip>
@@ -94,7 +94,7 @@ check(const unsigned int degree, const std::string &solver)
   ParameterHandler prm;
   xcrack::declare_all_parameters(prm);
   xcrack::read_parameter_string(prm, input.str());
-  xcrack::ElasticityProblem<dim> problem(prm);
+  xcrack::Simulator<dim> problem(prm);
   problem.run();
 
   const auto &stats = problem.get_statistics();

@@ -1,0 +1,72 @@
+#ifndef xcrack_mesh_refinement_interface_h
+#define xcrack_mesh_refinement_interface_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <xcrack/plugins.h>
+
+#include <memory>
+#include <string>
+
+namespace xcrack
+{
+  using namespace dealii;
+
+  template <int dim>
+  class Simulator;
+
+  /**
+   * How the mesh changes between two solves (`subsection Mesh refinement`):
+   * a strategy plugin marks cells, the Simulator caps the levels at
+   * `Maximum level`, carries the state across and refines.
+   */
+  namespace MeshRefinement
+  {
+    /**
+     * A refinement strategy: sets refine (and coarsen) flags on the locally
+     * owned cells. It reads the solution, the cracks and the mesh through
+     * SimulatorAccess.
+     */
+    template <int dim>
+    class Interface : public Plugins::InterfaceBase
+    {
+    public:
+      virtual void
+      mark(parallel::distributed::Triangulation<dim> &triangulation) const = 0;
+    };
+
+
+
+    /**
+     * The entries every strategy shares: how many solves a run does on
+     * successively refined meshes, which strategy marks the cells, and the
+     * finest level allowed.
+     */
+    struct Parameters
+    {
+      /// Declare the whole subsection, the strategies' entries included.
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      unsigned int n_cycles  = 1;
+      std::string  strategy  = "global";
+      unsigned int max_level = 12;
+    };
+
+
+
+    /// The strategy the parameters select, its own entries parsed.
+    template <int dim>
+    std::unique_ptr<Interface<dim>>
+    create(const Parameters     &parameters,
+           ParameterHandler     &prm,
+           const Simulator<dim> &simulator);
+  } // namespace MeshRefinement
+} // namespace xcrack
+
+#endif

@@ -1,0 +1,122 @@
+#ifndef xcrack_simulator_access_h
+#define xcrack_simulator_access_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <xcrack/parsed_function.h>
+#include <xcrack/plugins.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace xcrack
+{
+  using namespace dealii;
+
+  template <int dim>
+  class Simulator;
+  template <int dim>
+  class LevelSetFields;
+  template <int dim>
+  class CrackSurface;
+  template <int dim>
+  class CrackSet;
+  template <int dim>
+  class Enrichment;
+  class Material;
+
+  /**
+   * Read access to the state of the Simulator for plugins (ASPECT's
+   * SimulatorAccess): a plugin that derives from this class as well as from
+   * its system's Interface gets the simulator before its parameters are
+   * parsed, and reads the mesh, the solution, the cracks and the material
+   * through the functions below. Nothing here lets a plugin change the
+   * state: what it computes, it returns to the simulator.
+   */
+  template <int dim>
+  class SimulatorAccess
+  {
+  public:
+    virtual ~SimulatorAccess() = default;
+
+    /// Called by create_plugin() before the plugin's parameters are parsed.
+    void
+    initialize_simulator(const Simulator<dim> &simulator);
+
+  protected:
+    MPI_Comm
+    get_mpi_communicator() const;
+
+    /// The screen stream of rank 0.
+    const ConditionalOStream &
+    get_pcout() const;
+
+    /// The constants every expression of the parameter file may use.
+    const FunctionConstants &
+    get_function_constants() const;
+
+    const parallel::distributed::Triangulation<dim> &
+    get_triangulation() const;
+
+    const DoFHandler<dim> &
+    get_dof_handler() const;
+
+    /// The displacement with ghost entries.
+    const TrilinosWrappers::MPI::Vector &
+    get_solution() const;
+
+    const Material &
+    get_material() const;
+
+    /// The cracks' level sets lsn, lst on the mesh.
+    const LevelSetFields<dim> &
+    get_level_set_fields() const;
+
+    /// The cracks as the fields draw them (lips and ordered fronts).
+    const std::vector<CrackSurface<dim>> &
+    get_crack_surfaces() const;
+
+    /// The shapes the cracks were given in the parameter file.
+    const CrackSet<dim> &
+    get_initial_cracks() const;
+
+    /// The enrichment (null without a crack).
+    const Enrichment<dim> *
+    get_enrichment() const;
+
+  private:
+    const Simulator<dim> *simulator = nullptr;
+  };
+
+
+
+  /**
+   * Create the plugin of @p InterfaceType named @p name, as every plugin
+   * system does: give it the simulator (if it reads its state), let it
+   * parse its parameters from the subsection @p prm is in, then call its
+   * initialize(). @p entry names the selection entry for messages.
+   */
+  template <int dim, typename InterfaceType>
+  std::unique_ptr<InterfaceType>
+  create_plugin(const std::string    &name,
+                const std::string    &entry,
+                ParameterHandler     &prm,
+                const Simulator<dim> &simulator)
+  {
+    std::unique_ptr<InterfaceType> plugin =
+      Plugins::PluginList<InterfaceType>::create(name, entry);
+    if (auto *access = dynamic_cast<SimulatorAccess<dim> *>(plugin.get()))
+      access->initialize_simulator(simulator);
+    plugin->parse_parameters(prm);
+    plugin->initialize();
+    return plugin;
+  }
+} // namespace xcrack
+
+#endif

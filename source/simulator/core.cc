@@ -1,0 +1,290 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+
+#include <xcrack/condition_number.h>
+#include <xcrack/exact_solution.h>
+#include <xcrack/input_error.h>
+#include <xcrack/simulator.h>
+
+#include <filesystem>
+#include <iomanip>
+
+namespace xcrack
+{
+  template <int dim>
+  void
+  Simulator<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretization");
+    {
+      prm.declare_entry("Degree",
+                        "1",
+                        Patterns::Integer(1, 2),
+                        "Polynomial degree of the displacement (Q1 or Q2).");
+    }
+    prm.leave_subsection();
+
+    EnrichmentParameters::declare_parameters(prm);
+    FractureParameters::declare_parameters(prm);
+    MeshRefinement::Parameters::declare_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  Simulator<dim>::Simulator(ParameterHandler &prm,
+                            const MPI_Comm    mpi_communicator)
+    : mpi_communicator(mpi_communicator)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , prm(prm)
+    // Only the 2:1 balance, which p4est enforces globally: the other
+    // smoothing flags act on each rank's part of the mesh (with them, a
+    // cell near a partition boundary was refined on one rank and not on
+    // two, and K differed in the sixth digit: two collinear cracks, fifth
+    // mesh).
+    , triangulation(mpi_communicator,
+                    Triangulation<dim>::limit_level_difference_at_vertices)
+    , level_sets(triangulation)
+  {
+    run_parameters.parse_parameters(prm);
+    check_input(run_parameters.dimension == dim,
+                "Dimension = " + std::to_string(run_parameters.dimension) +
+                  " but this is a " + std::to_string(dim) + "D problem.");
+    material.parse_parameters(prm);
+    mesh_description.parse_parameters(prm);
+    linear_solver.parse_parameters(prm);
+
+    FunctionConstants &constants = function_constants;
+    constants                    = material.constants(dim);
+    constants["pi"]              = numbers::PI;
+    for (const auto &[name, value] : run_parameters.user_constants)
+      {
+        check_input(constants.count(name) == 0,
+                    "Function constants: '" + name +
+                      "' is a reserved name (E, nu, mu, lambda, pi).");
+        constants[name] = value;
+      }
+    exact_solution = ExactSolution::create<dim>(prm, constants, material);
+    boundary_conditions.parse_parameters(prm, constants, exact_solution);
+    refinement_parameters.parse_parameters(prm);
+    mesh_refinement =
+      MeshRefinement::create<dim>(refinement_parameters, prm, *this);
+    cracks.parse_parameters(prm);
+    fracture_parameters.parse_parameters(prm, constants);
+    check_input(dim == 2 ? !fracture_parameters.reference_3d :
+                           !fracture_parameters.reference_2d,
+                "Fracture parameters/Reference K: give " +
+                  std::string(dim == 2 ? "'K_I; K_II'" : "'K_I; K_II; K_III'") +
+                  " in " + std::to_string(dim) + "D.");
+
+    prm.enter_subsection("Discretization");
+    degree = prm.get_integer("Degree");
+    prm.leave_subsection();
+
+
+    mesh_description.create(triangulation);
+    boundary_conditions.check_against(triangulation);
+    cracks.check_against(triangulation);
+    check_input(!boundary_conditions.dirichlet.empty() ||
+                  !boundary_conditions.pinned.empty(),
+                "Boundary conditions/Dirichlet and Pinned points are empty: "
+                "without any prescribed displacement the rigid body motions "
+                "are free and the problem has no unique solution.");
+
+    check_input(!boundary_conditions.lip_pressure || cracks.size() > 0,
+                "Boundary conditions/Lip pressure is set but there is no "
+                "crack (Cracks/Number of cracks = 0).");
+    if (cracks.size() > 0)
+      {
+        EnrichmentParameters enrichment_parameters;
+        enrichment_parameters.parse_parameters(prm);
+        std::vector<const CrackGeometry<dim> *> crack_list;
+        for (unsigned int c = 0; c < cracks.size(); ++c)
+          crack_list.push_back(&cracks[c]);
+        enrichment = std::make_unique<Enrichment<dim>>(crack_list,
+                                                       degree,
+                                                       enrichment_parameters);
+        // Several cracks: classify the coarse mesh once now, so that
+        // cracks whose enriched zones meet stop the run here, before any
+        // result is written.
+        if (cracks.size() > 1)
+          {
+            DoFHandler<dim> probe(triangulation);
+            enrichment->set_fe_indices(probe);
+          }
+        // Gauss rules per element: the cells of the tip zone carry the
+        // non-polynomial branch functions and get two more points.
+        for (const auto &fe : enrichment->get_fe_collection())
+          {
+            fe_collection.push_back(fe);
+            quadrature_collection.push_back(QGauss<dim>(
+              degree +
+              (fe_collection.size() - 1 >= Enrichment<dim>::tip ? 3 : 1)));
+          }
+      }
+    else
+      {
+        fe_collection.push_back(FESystem<dim>(FE_Q<dim>(degree), dim));
+        quadrature_collection.push_back(QGauss<dim>(degree + 1));
+      }
+    face_quadrature_collection.push_back(QGauss<dim - 1>(degree + 1));
+
+    // The output directory must be usable: this is the last check before
+    // any result is written.
+    const std::filesystem::path dir(run_parameters.output_directory);
+    check_input(!std::filesystem::exists(dir) ||
+                  std::filesystem::is_directory(dir),
+                "Output directory = " + run_parameters.output_directory +
+                  ": exists and is not a directory.");
+  }
+
+
+
+  template <int dim>
+  const Statistics &
+  Simulator<dim>::get_statistics() const
+  {
+    return statistics;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::run()
+  {
+    // All input was checked in the constructor: from here on results are
+    // written.
+    timer = std::make_unique<TimerOutput>(mpi_communicator,
+                                          pcout,
+                                          TimerOutput::never,
+                                          TimerOutput::wall_times);
+    std::filesystem::create_directories(run_parameters.output_directory);
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      prm.print_parameters(run_parameters.output_directory + "/parameters.prm",
+                           ParameterHandler::ShortPRM);
+
+    pcout << "xcrack: " << dim << "D linear elasticity, Q" << degree
+          << " elements, " << linear_solver.type << " solver" << std::endl;
+    // Bilinear elements lock as the material becomes incompressible: the
+    // answer stays finite but can be far off (Case 1 at nu = 0.499: 22 %
+    // energy error with Q1 on 10,772 DoFs, 0.4 % with Q2 on 35,944).
+    if (degree == 1 && material.poisson_ratio > 0.45)
+      pcout << "Warning: Poisson's ratio = " << material.poisson_ratio
+            << " with Degree = 1: bilinear elements lock when the material "
+               "is nearly incompressible; use Discretization/Degree = 2."
+            << std::endl;
+    if (enrichment)
+      {
+        const auto &e = enrichment->get_parameters();
+        pcout << "X-FEM: jump enrichment";
+        if (e.tip_zone == EnrichmentParameters::TipZone::topological)
+          pcout << ", branch functions on the nodes of the cells the front "
+                   "touches";
+        else if (e.tip_zone == EnrichmentParameters::TipZone::geometric)
+          pcout << ", branch functions within " << e.radius << " of the front"
+                << (e.gather ? ", gathered" : "");
+        else
+          pcout << " only (no branch functions)";
+        pcout << std::endl;
+      }
+
+    std::map<std::string, double> previous_times;
+    for (unsigned int cycle = 0; cycle < refinement_parameters.n_cycles;
+         ++cycle)
+      {
+        if (cycle > 0)
+          {
+            TimerOutput::Scope t(*timer, "refine");
+            refine_mesh();
+          }
+        // The level-set fields give the crack as the mesh sees it (lips and
+        // front, written and reported below); the enrichment still reads the
+        // analytic geometry, which the fields interpolate (after the shifts
+        // of fit to vertex: setup_system() updates them). Propagation will
+        // update the fields every step.
+        setup_system();
+        assemble_system();
+        const unsigned int iterations = solve();
+
+        statistics.start_row();
+        statistics.add_value("step", (unsigned long long)cycle);
+        statistics.add_value("cycles", 0ull);
+        statistics.add_value(
+          "cells", (unsigned long long)triangulation.n_global_active_cells());
+        statistics.add_value("dofs", (unsigned long long)dof_handler.n_dofs());
+        statistics.add_value("enriched_dofs",
+                             (unsigned long long)n_free_enriched_dofs());
+        statistics.add_value("solver_iterations",
+                             (unsigned long long)iterations);
+        if (dof_handler.n_dofs() <= run_parameters.condition_number_limit)
+          statistics.add_value("condition_number",
+                               condition_number(system_matrix, constraints));
+
+        pcout << "Cycle " << cycle << ": "
+              << triangulation.n_global_active_cells() << " cells, "
+              << dof_handler.n_dofs() << " dofs";
+        if (linear_solver.type != "direct")
+          pcout << ", " << iterations << " CG iterations";
+        // The largest displacement component: a first sanity check of any
+        // run (and what the demo compares with beam theory).
+        const double max_displacement = compute_max_displacement();
+        statistics.add_value("max_displacement", max_displacement);
+        pcout << std::scientific << std::setprecision(4) << ", max |u_i| "
+              << max_displacement << std::defaultfloat;
+        if (exact_solution)
+          {
+            const auto [l2, energy] = compute_errors();
+            statistics.add_value("L2_error", l2);
+            statistics.add_value("energy_error", energy);
+            pcout << std::scientific << std::setprecision(3) << ", L2 error "
+                  << l2 << ", energy error " << energy << std::defaultfloat;
+          }
+        pcout << std::endl;
+        if (enrichment && enrichment->get_parameters().gather)
+          {
+            const auto n_masters = enrichment->gathering_masters().n_elements();
+            pcout << "  gathering: " << n_masters / (4 * dim) << " masters, "
+                  << n_masters << " branch unknowns" << std::endl;
+          }
+        if (enrichment)
+          report_crack_surface();
+        if (enrichment && fracture_parameters.compute)
+          compute_fracture_parameters(cycle);
+
+        if (run_parameters.write_vtu)
+          output_results(cycle);
+
+        // Wall time of each phase in this cycle: the timer accumulates over
+        // the run, so take differences.
+        const auto times =
+          timer->get_summary_data(TimerOutput::OutputData::total_wall_time);
+        for (const std::string phase : {"setup",
+                                        "assemble",
+                                        "solve",
+                                        "errors",
+                                        "fracture",
+                                        "output",
+                                        "refine"})
+          {
+            const double total = (times.count(phase) ? times.at(phase) : 0.);
+            statistics.add_value("t_" + phase, total - previous_times[phase]);
+            previous_times[phase] = total;
+          }
+        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+          statistics.write_csv(run_parameters.output_directory +
+                               "/statistics.csv");
+      }
+
+    if (exact_solution && statistics.n_rows() > 1)
+      print_convergence_table();
+    if (run_parameters.timing_summary)
+      timer->print_summary();
+  }
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace xcrack

@@ -1,0 +1,237 @@
+#include <deal.II/hp/fe_values.h>
+
+#include <xcrack/fracture/displacement_jump.h>
+#include <xcrack/fracture/interaction_integral.h>
+#include <xcrack/simulator.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+
+namespace xcrack
+{
+  template <int dim>
+  void
+  Simulator<dim>::compute_fracture_parameters(const unsigned int cycle)
+  {
+    TimerOutput::Scope t(*timer, "fracture");
+    // The fronts of all cracks, numbered one after the other.
+    std::vector<std::vector<FrontPoint<dim>>> fronts;
+    for (const auto &surface : crack_surfaces)
+      fronts.insert(fronts.end(),
+                    surface.fronts().begin(),
+                    surface.fronts().end());
+    if (fronts.empty())
+      return;
+
+    hp::FEValues<dim>              hp_fe_values(fe_collection,
+                                   quadrature_collection,
+                                   update_values | update_gradients |
+                                     update_quadrature_points |
+                                     update_JxW_values |
+                                     update_inverse_jacobians);
+    std::unique_ptr<FEValues<dim>> special_values;
+    const auto fe_values_of = [&](const auto &cell) -> const FEValues<dim> & {
+      return reinit_fe_values(cell, hp_fe_values, special_values, degree + 1);
+    };
+    const auto lips_of = [&](const auto                  &cell,
+                             std::vector<Point<dim>>     &points,
+                             std::vector<double>         &weights,
+                             std::vector<Tensor<1, dim>> &normals) {
+      const auto rule = lip_rule(cell);
+      points          = rule.get_points();
+      weights         = rule.get_weights();
+      normals         = rule.get_normal_vectors();
+    };
+    const InteractionIntegral<dim> integral(fracture_parameters, material);
+    const auto                     values = integral.compute(dof_handler,
+                                         solution,
+                                         fronts,
+                                         fe_values_of,
+                                         boundary_conditions.lip_pressure.get(),
+                                         lips_of,
+                                         boundary_conditions.body_force.get());
+
+    // The cross-check by the displacement jumps over the crown.
+    std::vector<std::array<double, 3>> jump_k;
+    for (const auto &v : values)
+      jump_k.push_back(displacement_jump_k(
+        dof_handler, solution, v.point, material, v.r_inf, v.r_sup));
+
+    // The reference K at each point, if given.
+    std::vector<Vector<double>> reference(values.size());
+    const Function<dim>        *reference_function = nullptr;
+    if constexpr (dim == 2)
+      reference_function = fracture_parameters.reference_2d.get();
+    else
+      reference_function = fracture_parameters.reference_3d.get();
+    if (reference_function)
+      for (unsigned int i = 0; i < values.size(); ++i)
+        {
+          reference[i].reinit(dim);
+          reference_function->vector_value(values[i].point.position,
+                                           reference[i]);
+        }
+    const auto k_of = [](const FrontValues<dim> &v, const unsigned int m) {
+      return (m == 0 ? v.k_I : m == 1 ? v.k_II : v.k_III);
+    };
+    constexpr unsigned int n_modes       = dim;
+    const char            *mode_names[3] = {"K_I", "K_II", "K_III"};
+
+    const auto warn_crown = [&](const FrontValues<dim> &v) {
+      if (!v.crown_clear)
+        pcout << "  Warning: the crown of " << (dim == 2 ? "tip " : "front ")
+              << v.front + 1 << " (r_sup = " << v.r_sup
+              << ") reaches the boundary or another "
+              << (dim == 2 ? "tip" : "front")
+              << "; its K and G are unreliable. Use smaller Fracture "
+                 "parameters/Crown radii or a finer mesh there."
+              << std::endl;
+    };
+
+    // On screen, K's are rounded to 1e-6 of the largest one: a K that
+    // vanishes by symmetry then reads 0 rather than round-off that differs
+    // between builds (the CSV files and the statistics keep every digit).
+    if constexpr (dim == 2)
+      for (unsigned int i = 0; i < values.size(); ++i)
+        {
+          const auto  &v = values[i];
+          const double quantum =
+            1e-6 * std::max({std::abs(v.k_I), std::abs(v.k_II), 1e-300});
+          const auto rounded = [&](const double k) {
+            return std::round(k / quantum) * quantum + 0.;
+          };
+          pcout << "  tip " << i + 1 << std::scientific << std::setprecision(6)
+                << ": K_I = " << rounded(v.k_I)
+                << ", K_II = " << rounded(v.k_II) << ", G = " << v.g
+                << ", G_Irwin = " << v.g_irwin << std::endl
+                << "    displacement jumps: K_I = " << rounded(jump_k[i][0])
+                << ", K_II = " << rounded(jump_k[i][1]) << std::defaultfloat
+                << std::endl;
+          warn_crown(v);
+          const std::string suffix = "_" + std::to_string(i + 1);
+          statistics.add_value("K_I" + suffix, v.k_I);
+          statistics.add_value("K_II" + suffix, v.k_II);
+          statistics.add_value("G" + suffix, v.g);
+          statistics.add_value("K_I_jump" + suffix, jump_k[i][0]);
+          statistics.add_value("K_II_jump" + suffix, jump_k[i][1]);
+        }
+    else
+      // Per front: the range and mean of each K over its nodes, and the
+      // largest gap between G-theta and Irwin's G.
+      for (unsigned int f = 0; f < fronts.size(); ++f)
+        {
+          double       k_min[3] = {1e300, 1e300, 1e300};
+          double       k_max[3] = {-1e300, -1e300, -1e300}, k_mean[3] = {};
+          double       largest = 1e-300, irwin_gap = 0, g_max = 1e-300;
+          unsigned int n = 0;
+          for (const auto &v : values)
+            if (v.front == f)
+              {
+                for (unsigned int m = 0; m < 3; ++m)
+                  {
+                    k_min[m] = std::min(k_min[m], k_of(v, m));
+                    k_max[m] = std::max(k_max[m], k_of(v, m));
+                    k_mean[m] += k_of(v, m);
+                    largest = std::max(largest, std::abs(k_of(v, m)));
+                  }
+                irwin_gap = std::max(irwin_gap, std::abs(v.g - v.g_irwin));
+                g_max     = std::max(g_max, std::abs(v.g));
+                ++n;
+              }
+          const double quantum = 1e-6 * largest;
+          const auto   rounded = [&](const double k) {
+            return std::round(k / quantum) * quantum + 0.;
+          };
+          std::string basis;
+          for (const auto &v : values)
+            if (v.front == f)
+              basis = v.basis;
+          pcout << "  front " << f + 1 << ": " << n << " points (" << basis
+                << "), " << std::scientific << std::setprecision(6);
+          for (unsigned int m = 0; m < 3; ++m)
+            {
+              k_mean[m] /= n;
+              pcout << (m > 0 ? "; " : "") << mode_names[m] << " in ["
+                    << rounded(k_min[m]) << ", " << rounded(k_max[m]) << "]";
+              const std::string suffix = "_" + std::to_string(f + 1);
+              statistics.add_value(std::string(mode_names[m]) + "_min" + suffix,
+                                   k_min[m]);
+              statistics.add_value(std::string(mode_names[m]) + "_max" + suffix,
+                                   k_max[m]);
+            }
+          pcout << std::endl
+                << "    |G - G_Irwin| / max G = " << std::setprecision(2)
+                << std::round(irwin_gap / g_max * 1e4) * 1e-4
+                << std::defaultfloat << std::endl;
+          for (const auto &v : values)
+            if (v.front == f && !v.crown_clear)
+              {
+                warn_crown(v);
+                break;
+              }
+        }
+    // Errors against the reference: relative to |K| where it does not
+    // vanish (2D), or (3D) to the largest |K| of that mode along the front
+    // (K_II and K_III vary in sign along a front under shear).
+    if (reference_function)
+      {
+        double error[3] = {0, 0, 0};
+        for (unsigned int m = 0; m < n_modes; ++m)
+          {
+            double scale = 0, overall = 0;
+            for (unsigned int i = 0; i < values.size(); ++i)
+              {
+                scale   = std::max(scale, std::abs(reference[i][m]));
+                overall = std::max(overall, reference[i].l2_norm());
+              }
+            for (unsigned int i = 0; i < values.size(); ++i)
+              {
+                double norm = (scale > 1e-12 * overall ? scale : overall);
+                if (dim == 2)
+                  norm = (std::abs(reference[i][m]) >
+                              1e-12 * reference[i].l2_norm() ?
+                            std::abs(reference[i][m]) :
+                            reference[i].l2_norm());
+                error[m] =
+                  std::max(error[m],
+                           std::abs(k_of(values[i], m) - reference[i][m]) /
+                             norm);
+              }
+            statistics.add_value(std::string(mode_names[m]) + "_error",
+                                 error[m]);
+          }
+        pcout << "  K errors against the reference (max over the "
+              << (dim == 2 ? "tips" : "front")
+              << ", to 1e-6): " << std::scientific << std::setprecision(3);
+        for (unsigned int m = 0; m < n_modes; ++m)
+          pcout << (m > 0 ? ", " : "") << mode_names[m] << " "
+                << std::round(error[m] * 1e6) * 1e-6;
+        pcout << std::defaultfloat << std::endl;
+      }
+
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        std::ofstream csv(run_parameters.output_directory + "/front_" +
+                          Utilities::int_to_string(cycle, 3) + ".csv");
+        csv << "index,s,x,y,z,K_I,K_II,K_III,G,G_Irwin,r_inf,r_sup,"
+               "K_I_jump,K_II_jump,K_III_jump,front\n"
+            << std::setprecision(10);
+        for (unsigned int i = 0; i < values.size(); ++i)
+          {
+            const auto &v = values[i];
+            csv << i << ',' << v.point.s << ',' << v.point.position[0] << ','
+                << v.point.position[1] << ','
+                << (dim == 3 ? v.point.position[dim - 1] : 0.) << ',' << v.k_I
+                << ',' << v.k_II << ',' << v.k_III << ',' << v.g << ','
+                << v.g_irwin << ',' << v.r_inf << ',' << v.r_sup << ','
+                << jump_k[i][0] << ',' << jump_k[i][1] << ',' << jump_k[i][2]
+                << ',' << v.front + 1 << '\n';
+          }
+      }
+  }
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace xcrack

@@ -1,0 +1,99 @@
+#include <deal.II/numerics/data_out.h>
+
+#include <xcrack/output.h>
+#include <xcrack/simulator.h>
+
+#include <fstream>
+
+namespace xcrack
+{
+  template <int dim>
+  void
+  Simulator<dim>::output_results(const unsigned int cycle)
+  {
+    TimerOutput::Scope t(*timer, "output");
+
+    const StressPostprocessor<dim> stress(material);
+    DataOut<dim>                   data_out;
+    data_out.attach_dof_handler(dof_handler);
+    data_out.add_data_vector(
+      solution,
+      std::vector<std::string>(dim, "displacement"),
+      DataOut<dim>::type_dof_data,
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+        dim, DataComponentInterpretation::component_is_part_of_vector));
+    data_out.add_data_vector(solution, stress);
+    Vector<float> subdomain(triangulation.n_active_cells());
+    subdomain = triangulation.locally_owned_subdomain();
+    data_out.add_data_vector(subdomain, "subdomain");
+    // Which functions each cell carries (0 plain, 1 jump, 2 branch, 3 both)
+    // and what the crack does to it (0 nothing, 1 splits it, 2 front in it,
+    // 3 front within a diameter): what a user checks first when an enriched
+    // run looks wrong.
+    Vector<float> enrichment_index(triangulation.n_active_cells());
+    Vector<float> crack_category(triangulation.n_active_cells());
+    if (enrichment)
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            enrichment_index[cell->active_cell_index()] =
+              cell->active_fe_index();
+            crack_category[cell->active_cell_index()] =
+              enrichment->cell_category(cell);
+          }
+    if (enrichment)
+      {
+        data_out.add_data_vector(enrichment_index, "enrichment");
+        data_out.add_data_vector(crack_category, "crack_cell");
+      }
+    for (unsigned int i = 0; i < cracks.size(); ++i)
+      {
+        const std::string suffix =
+          (cracks.size() > 1 ? std::to_string(i + 1) : "");
+        data_out.add_data_vector(level_sets.get_dof_handler(),
+                                 level_sets.lsn(i),
+                                 "lsn" + suffix);
+        data_out.add_data_vector(level_sets.get_dof_handler(),
+                                 level_sets.lst(i),
+                                 "lst" + suffix);
+      }
+    data_out.build_patches(degree);
+    // crack-<cycle>.vtu for one crack, crack<i>-<cycle>.vtu for several.
+    if (enrichment)
+      for (unsigned int c = 0; c < crack_surfaces.size(); ++c)
+        crack_surfaces[c].write_vtu(
+          run_parameters.output_directory + "/crack" +
+            (cracks.size() > 1 ? std::to_string(c + 1) : "") + "-" +
+            Utilities::int_to_string(cycle, 3) + ".vtu",
+          dof_handler,
+          solution);
+
+    const std::string  dir  = run_parameters.output_directory + "/";
+    const std::string  base = "solution-" + Utilities::int_to_string(cycle, 3);
+    const unsigned int rank =
+      Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(mpi_communicator);
+    {
+      std::ofstream out(dir + base + "." + Utilities::int_to_string(rank, 4) +
+                        ".vtu");
+      data_out.write_vtu(out);
+    }
+    if (rank == 0)
+      {
+        std::vector<std::string> pieces;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          pieces.push_back(base + "." + Utilities::int_to_string(r, 4) +
+                           ".vtu");
+        std::ofstream pvtu(dir + base + ".pvtu");
+        data_out.write_pvtu_record(pvtu, pieces);
+        pvd_records.emplace_back(cycle, base + ".pvtu");
+        std::ofstream pvd(dir + "solution.pvd");
+        DataOutBase::write_pvd_record(pvd, pvd_records);
+      }
+  }
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace xcrack

@@ -1,0 +1,165 @@
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <xcrack/input_error.h>
+#include <xcrack/simulator.h>
+#include <xcrack/xfem/enriched_dirichlet.h>
+
+#include <sstream>
+
+namespace xcrack
+{
+  template <int dim>
+  void
+  Simulator<dim>::setup_system()
+  {
+    {
+      TimerOutput::Scope t(*timer, "setup");
+      dof_handler.reinit(triangulation);
+      if (enrichment)
+        enrichment->set_fe_indices(dof_handler);
+    }
+    // The level-set fields follow the enrichment's fit-to-vertex shifts;
+    // gathering ties the branch DoFs along the fronts they give.
+    update_level_sets();
+    std::vector<std::vector<std::vector<FrontPoint<dim>>>> fronts;
+    if (enrichment && enrichment->get_parameters().gather)
+      for (unsigned int c = 0; c < cracks.size(); ++c)
+        {
+          CrackSurface<dim> surface;
+          surface.extract(level_sets, c);
+          fronts.push_back(surface.fronts());
+        }
+
+    TimerOutput::Scope t(*timer, "setup");
+    dof_handler.distribute_dofs(fe_collection);
+    enriched_dofs      = (enrichment ? enrichment->enriched_dofs(dof_handler) :
+                                       IndexSet(dof_handler.n_dofs()));
+    locally_owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+
+    constraints.clear();
+    constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    if (enrichment)
+      enrichment->make_constraints(dof_handler, constraints, fronts);
+
+    make_dirichlet_constraints();
+    constraints.close();
+
+    // Gathered DoFs are tied to masters that may be owned by another rank
+    // and lie outside the relevant set: assembly writes to their rows too.
+    IndexSet rows = locally_relevant_dofs;
+    if (enrichment)
+      rows.add_indices(enrichment->gathering_masters());
+    DynamicSparsityPattern dsp(rows);
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               locally_owned_dofs,
+                                               mpi_communicator,
+                                               rows);
+    system_matrix.reinit(locally_owned_dofs,
+                         locally_owned_dofs,
+                         dsp,
+                         mpi_communicator);
+    system_rhs.reinit(locally_owned_dofs, mpi_communicator);
+    solution.reinit(locally_owned_dofs,
+                    locally_relevant_dofs,
+                    mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::update_level_sets()
+  {
+    if (cracks.size() == 0)
+      return;
+    TimerOutput::Scope t(*timer, "levelset");
+    level_sets.update(cracks,
+                      enrichment ? enrichment->lsn_shift() :
+                                   std::vector<std::vector<double>>());
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::make_dirichlet_constraints()
+  {
+    // Pinned vertices: their standard DoFs of the listed components. A pin
+    // where the vertex carries enrichment would not hold the displacement
+    // there (the enriched functions add to it): refused.
+    for (const auto &[point, mask] : boundary_conditions.pinned)
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int v : cell->vertex_indices())
+            if (cell->vertex(v).distance(point) < 1e-10 * cell->diameter())
+              {
+                const FiniteElement<dim>            &fe = cell->get_fe();
+                std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+                cell->get_dof_indices(dofs);
+                for (unsigned int k = 0; k < fe.n_dofs_per_vertex(); ++k)
+                  {
+                    const unsigned int i = v * fe.n_dofs_per_vertex() + k;
+                    const unsigned int c =
+                      fe.system_to_component_index(i).first;
+                    if (!mask[c])
+                      continue;
+                    if (enrichment && Enrichment<dim>::is_enriched_dof(fe, i))
+                      {
+                        std::ostringstream where;
+                        where << point;
+                        check_input(constraints.is_constrained(dofs[i]),
+                                    "Boundary conditions/Pinned points: (" +
+                                      where.str() +
+                                      ") lies where the crack enriches the "
+                                      "space; pin a vertex farther from it.");
+                        continue;
+                      }
+                    if (!constraints.is_constrained(dofs[i]))
+                      {
+                        constraints.add_line(dofs[i]);
+                        constraints.set_inhomogeneity(dofs[i], 0.);
+                      }
+                  }
+              }
+
+    if (enrichment)
+      {
+        make_enriched_dirichlet_constraints(dof_handler,
+                                            *enrichment,
+                                            boundary_conditions,
+                                            constraints);
+        return;
+      }
+    for (const auto &[id, function] : boundary_conditions.dirichlet)
+      VectorTools::interpolate_boundary_values(
+        dof_handler,
+        id,
+        *function,
+        constraints,
+        boundary_conditions.dirichlet_mask.at(id));
+  }
+
+
+
+  template <int dim>
+  types::global_dof_index
+  Simulator<dim>::n_free_enriched_dofs() const
+  {
+    types::global_dof_index n = 0;
+    for (const auto dof : enriched_dofs)
+      if (locally_owned_dofs.is_element(dof) &&
+          !constraints.is_constrained(dof))
+        ++n;
+    return Utilities::MPI::sum(n, mpi_communicator);
+  }
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace xcrack

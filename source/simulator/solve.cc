@@ -1,0 +1,33 @@
+#include <deal.II/dofs/dof_tools.h>
+
+#include <xcrack/simulator.h>
+
+namespace xcrack
+{
+  template <int dim>
+  unsigned int
+  Simulator<dim>::solve()
+  {
+    TimerOutput::Scope t(*timer, "solve");
+
+    std::vector<std::vector<bool>> constant_modes;
+    if (linear_solver.type != "direct")
+      DoFTools::extract_constant_modes(dof_handler,
+                                       ComponentMask(dim, true),
+                                       constant_modes);
+
+    TrilinosWrappers::MPI::Vector distributed(locally_owned_dofs,
+                                              mpi_communicator);
+    const unsigned int iterations = linear_solver.solve(system_matrix,
+                                                        distributed,
+                                                        system_rhs,
+                                                        constant_modes);
+    constraints.distribute(distributed);
+    solution = distributed;
+    return iterations;
+  }
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace xcrack

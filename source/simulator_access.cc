@@ -1,0 +1,116 @@
+#include <xcrack/simulator.h>
+#include <xcrack/simulator_access.h>
+
+namespace xcrack
+{
+  template <int dim>
+  void
+  SimulatorAccess<dim>::initialize_simulator(const Simulator<dim> &s)
+  {
+    simulator = &s;
+  }
+
+
+
+  template <int dim>
+  MPI_Comm
+  SimulatorAccess<dim>::get_mpi_communicator() const
+  {
+    return simulator->mpi_communicator;
+  }
+
+
+
+  template <int dim>
+  const ConditionalOStream &
+  SimulatorAccess<dim>::get_pcout() const
+  {
+    return simulator->pcout;
+  }
+
+
+
+  template <int dim>
+  const FunctionConstants &
+  SimulatorAccess<dim>::get_function_constants() const
+  {
+    return simulator->function_constants;
+  }
+
+
+
+  template <int dim>
+  const parallel::distributed::Triangulation<dim> &
+  SimulatorAccess<dim>::get_triangulation() const
+  {
+    return simulator->triangulation;
+  }
+
+
+
+  template <int dim>
+  const DoFHandler<dim> &
+  SimulatorAccess<dim>::get_dof_handler() const
+  {
+    return simulator->dof_handler;
+  }
+
+
+
+  template <int dim>
+  const TrilinosWrappers::MPI::Vector &
+  SimulatorAccess<dim>::get_solution() const
+  {
+    return simulator->solution;
+  }
+
+
+
+  template <int dim>
+  const Material &
+  SimulatorAccess<dim>::get_material() const
+  {
+    return simulator->material;
+  }
+
+
+
+  template <int dim>
+  const LevelSetFields<dim> &
+  SimulatorAccess<dim>::get_level_set_fields() const
+  {
+    return simulator->level_sets;
+  }
+
+
+
+  template <int dim>
+  const std::vector<CrackSurface<dim>> &
+  SimulatorAccess<dim>::get_crack_surfaces() const
+  {
+    return simulator->crack_surfaces;
+  }
+
+
+
+  template <int dim>
+  const CrackSet<dim> &
+  SimulatorAccess<dim>::get_initial_cracks() const
+  {
+    return simulator->cracks;
+  }
+
+
+
+  template <int dim>
+  const Enrichment<dim> *
+  SimulatorAccess<dim>::get_enrichment() const
+  {
+    return simulator->enrichment.get();
+  }
+
+
+
+  template class SimulatorAccess<2>;
+  template class SimulatorAccess<3>;
+} // namespace xcrack
