@@ -36,8 +36,10 @@ integrate_below(const CrackGeometry<dim> &crack)
   EnrichmentParameters parameters;
   parameters.heaviside_volume_tolerance = 0;
   parameters.fit_to_vertex              = 0; // the crack as given
-  Enrichment<dim> enrichment(crack, 1, parameters);
-  enrichment.set_fe_indices(dof_handler);
+  LevelSetFields<dim> fields(tria);
+  fields.initialize({&crack});
+  Enrichment<dim> enrichment(1, 1, parameters);
+  enrichment.set_fe_indices(dof_handler, fields);
   dof_handler.distribute_dofs(enrichment.get_fe_collection());
 
   const FE_Q<dim> fe(1);

@@ -39,9 +39,11 @@ main(int argc, char **argv)
       EnrichmentParameters parameters;
       parameters.tip_zone = EnrichmentParameters::TipZone::geometric;
       parameters.radius   = 0.3;
-      Enrichment<2> enrichment(crack, degree, parameters);
+      LevelSetFields<2> fields(tria);
+      fields.initialize({&crack});
+      Enrichment<2> enrichment(1, degree, parameters);
       DoFHandler<2> dof_handler(tria);
-      enrichment.set_fe_indices(dof_handler);
+      enrichment.set_fe_indices(dof_handler, fields);
       dof_handler.distribute_dofs(enrichment.get_fe_collection());
 
       const FE_Q<2>       linear(1), standard(degree);

@@ -70,7 +70,7 @@ check_penny()
       const double      h = 2. / (8 << cycle);
       LevelSetFields<3> level_sets(mesh);
       CrackSurface<3>   surface;
-      level_sets.update(cracks);
+      level_sets.initialize(cracks.shapes());
       surface.extract(level_sets, 0);
 
       const auto &fronts   = surface.fronts();
@@ -137,7 +137,7 @@ check_surface_crack()
   GridGenerator::subdivided_hyper_cube(mesh, 16, -1, 1);
   LevelSetFields<3> level_sets(mesh);
   CrackSurface<3>   surface;
-  level_sets.update(cracks);
+  level_sets.initialize(cracks.shapes());
   surface.extract(level_sets, 0);
   const auto &fronts = surface.fronts();
   logfile << fronts.size() << " front(s)";
@@ -168,7 +168,7 @@ check_edge_crack_2d()
   GridGenerator::subdivided_hyper_cube(mesh, 20, -1, 1);
   LevelSetFields<2> level_sets(mesh);
   CrackSurface<2>   surface;
-  level_sets.update(cracks);
+  level_sets.initialize(cracks.shapes());
   surface.extract(level_sets, 0);
   const auto &fronts = surface.fronts();
   logfile << fronts.size() << " tip(s)";

@@ -78,7 +78,7 @@ namespace xcrack
 
   template <int dim>
   std::pair<Tensor<1, dim>, Tensor<1, dim>>
-  level_set_gradients(const CrackGeometry<dim> &crack, const Point<dim> &p)
+  LevelSetFunctions<dim>::gradients(const Point<dim> &p) const
   {
     double scale = 1;
     for (unsigned int d = 0; d < dim; ++d)
@@ -90,16 +90,14 @@ namespace xcrack
         Point<dim> plus = p, minus = p;
         plus[d] += h;
         minus[d] -= h;
-        grad_n[d] = (crack.lsn(plus) - crack.lsn(minus)) / (2 * h);
-        grad_t[d] = (crack.lst(plus) - crack.lst(minus)) / (2 * h);
+        grad_n[d] = (lsn(plus) - lsn(minus)) / (2 * h);
+        grad_t[d] = (lst(plus) - lst(minus)) / (2 * h);
       }
     return {grad_n, grad_t};
   }
 
-  template std::pair<Tensor<1, 2>, Tensor<1, 2>>
-  level_set_gradients(const CrackGeometry<2> &, const Point<2> &);
-  template std::pair<Tensor<1, 3>, Tensor<1, 3>>
-  level_set_gradients(const CrackGeometry<3> &, const Point<3> &);
+  template class LevelSetFunctions<2>;
+  template class LevelSetFunctions<3>;
 
 
   namespace

@@ -308,6 +308,18 @@ namespace xcrack
 
 
 
+  template <int dim>
+  std::vector<const CrackGeometry<dim> *>
+  CrackSet<dim>::shapes() const
+  {
+    std::vector<const CrackGeometry<dim> *> list;
+    for (const auto &crack : cracks)
+      list.push_back(crack.get());
+    return list;
+  }
+
+
+
   template class CrackSet<2>;
   template class CrackSet<3>;
 } // namespace xcrack

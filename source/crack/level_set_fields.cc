@@ -5,13 +5,12 @@
 
 #include <xcrack/crack/level_set_fields.h>
 
-#include <functional>
+#include <limits>
 
 namespace xcrack
 {
   template <int dim>
-  LevelSetFields<dim>::LevelSetFields(
-    const parallel::distributed::Triangulation<dim> &triangulation)
+  LevelSetFields<dim>::LevelSetFields(const Triangulation<dim> &triangulation)
     : fe(1)
     , dof_handler(triangulation)
   {}
@@ -20,57 +19,76 @@ namespace xcrack
 
   template <int dim>
   void
-  LevelSetFields<dim>::update(const CrackSet<dim>                    &cracks,
-                              const std::vector<std::vector<double>> &lsn_shift)
+  LevelSetFields<dim>::reinit_vector(TrilinosWrappers::MPI::Vector &vector,
+                                     const bool ghosted) const
+  {
+    const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
+    if (ghosted)
+      {
+        IndexSet relevant;
+        DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+        vector.reinit(dof_handler.locally_owned_dofs(), relevant, comm);
+      }
+    else
+      vector.reinit(dof_handler.locally_owned_dofs(), comm);
+  }
+
+
+
+  template <int dim>
+  void
+  LevelSetFields<dim>::initialize(
+    const std::vector<const CrackGeometry<dim> *> &shapes)
   {
     dof_handler.distribute_dofs(fe);
-    const IndexSet owned = dof_handler.locally_owned_dofs();
-    IndexSet       relevant;
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-    const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
-
-    // Interpolate one level set of a crack into a ghosted vector.
-    TrilinosWrappers::MPI::Vector distributed(owned, comm);
-    const auto                    interpolate =
-      [&](const std::function<double(const Point<dim> &)> &f,
-          TrilinosWrappers::MPI::Vector                   &field,
-          const std::vector<double>                       &shift) {
-        VectorTools::interpolate(dof_handler,
-                                 ScalarFunctionFromFunctionObject<dim>(f),
-                                 distributed);
-        if (!shift.empty())
-          {
-            for (const auto &cell : dof_handler.active_cell_iterators())
-              if (cell->is_locally_owned())
-                for (const unsigned int v : cell->vertex_indices())
-                  {
-                    // Set, not subtract: a vertex is met by every cell
-                    // around it. Only the few shifted vertices are touched.
-                    const auto dof = cell->vertex_dof_index(v, 0);
-                    if (shift[cell->vertex_index(v)] != 0 &&
-                        owned.is_element(dof))
-                      distributed[dof] =
-                        f(cell->vertex(v)) - shift[cell->vertex_index(v)];
-                  }
-            distributed.compress(VectorOperation::insert);
-          }
-        field.reinit(owned, relevant, comm);
-        field = distributed;
-      };
-
-    normal.resize(cracks.size());
-    tangent.resize(cracks.size());
-    for (unsigned int i = 0; i < cracks.size(); ++i)
+    std::vector<TrilinosWrappers::MPI::Vector> owned(2 * shapes.size());
+    for (unsigned int c = 0; c < shapes.size(); ++c)
       {
-        const CrackGeometry<dim> &crack = cracks[i];
-        interpolate([&](const Point<dim> &p) { return crack.lsn(p); },
-                    normal[i],
-                    (i < lsn_shift.size() ? lsn_shift[i] :
-                                            std::vector<double>()));
-        interpolate([&](const Point<dim> &p) { return crack.lst(p); },
-                    tangent[i],
-                    {});
+        const CrackGeometry<dim> &shape = *shapes[c];
+        reinit_vector(owned[c], false);
+        reinit_vector(owned[shapes.size() + c], false);
+        VectorTools::interpolate(dof_handler,
+                                 ScalarFunctionFromFunctionObject<dim>(
+                                   [&](const Point<dim> &p) {
+                                     return shape.lsn(p);
+                                   }),
+                                 owned[c]);
+        VectorTools::interpolate(dof_handler,
+                                 ScalarFunctionFromFunctionObject<dim>(
+                                   [&](const Point<dim> &p) {
+                                     return shape.lst(p);
+                                   }),
+                                 owned[shapes.size() + c]);
       }
+    set_all(owned);
+  }
+
+
+
+  template <int dim>
+  void
+  LevelSetFields<dim>::set_all(
+    const std::vector<TrilinosWrappers::MPI::Vector> &owned)
+  {
+    const unsigned int n = owned.size() / 2;
+    normal.resize(n);
+    tangent.resize(n);
+    for (unsigned int c = 0; c < n; ++c)
+      {
+        reinit_vector(normal[c], true);
+        reinit_vector(tangent[c], true);
+        normal[c]  = owned[c];
+        tangent[c] = owned[n + c];
+      }
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  LevelSetFields<dim>::n_cracks() const
+  {
+    return normal.size();
   }
 
 
@@ -88,6 +106,7 @@ namespace xcrack
   const TrilinosWrappers::MPI::Vector &
   LevelSetFields<dim>::lsn(const unsigned int crack) const
   {
+    AssertIndexRange(crack, normal.size());
     return normal[crack];
   }
 
@@ -97,7 +116,154 @@ namespace xcrack
   const TrilinosWrappers::MPI::Vector &
   LevelSetFields<dim>::lst(const unsigned int crack) const
   {
+    AssertIndexRange(crack, tangent.size());
     return tangent[crack];
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  LevelSetFields<dim>::vertex_values(const unsigned int crack,
+                                     const bool         normal_field) const
+  {
+    const TrilinosWrappers::MPI::Vector &field =
+      (normal_field ? lsn(crack) : lst(crack));
+    std::vector<double> values(dof_handler.get_triangulation().n_vertices(),
+                               std::numeric_limits<double>::quiet_NaN());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int v : cell->vertex_indices())
+          values[cell->vertex_index(v)] = field[cell->vertex_dof_index(v, 0)];
+    return values;
+  }
+
+
+
+  template <int dim>
+  void
+  LevelSetFields<dim>::set(const unsigned int                   crack,
+                           const TrilinosWrappers::MPI::Vector &new_lsn,
+                           const TrilinosWrappers::MPI::Vector &new_lst)
+  {
+    AssertIndexRange(crack, normal.size());
+    normal[crack]  = new_lsn;
+    tangent[crack] = new_lst;
+  }
+
+
+
+  template <int dim>
+  void
+  LevelSetFields<dim>::subtract_from_lsn(
+    const std::vector<std::vector<double>> &shift)
+  {
+    for (unsigned int c = 0; c < shift.size() && c < normal.size(); ++c)
+      {
+        if (shift[c].empty())
+          continue;
+        TrilinosWrappers::MPI::Vector owned;
+        reinit_vector(owned, false);
+        owned = normal[c];
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                // Set, not subtract: a vertex is met by every cell around
+                // it. Only the few shifted vertices are touched.
+                const auto dof = cell->vertex_dof_index(v, 0);
+                if (shift[c][cell->vertex_index(v)] != 0 &&
+                    owned.locally_owned_elements().is_element(dof))
+                  owned[dof] = normal[c][dof] - shift[c][cell->vertex_index(v)];
+              }
+        owned.compress(VectorOperation::insert);
+        normal[c] = owned;
+      }
+  }
+
+
+
+  template <int dim>
+  std::vector<const TrilinosWrappers::MPI::Vector *>
+  LevelSetFields<dim>::all_fields() const
+  {
+    std::vector<const TrilinosWrappers::MPI::Vector *> fields;
+    for (const auto &f : normal)
+      fields.push_back(&f);
+    for (const auto &f : tangent)
+      fields.push_back(&f);
+    return fields;
+  }
+
+
+
+  template <int dim>
+  void
+  LevelSetFields<dim>::prepare_for_coarsening_and_refinement()
+  {
+    transfer =
+      std::make_unique<parallel::distributed::
+                         SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>>(
+        dof_handler);
+    transfer->prepare_for_coarsening_and_refinement(all_fields());
+  }
+
+
+
+  template <int dim>
+  void
+  LevelSetFields<dim>::interpolate()
+  {
+    Assert(transfer,
+           ExcMessage("Call prepare_for_coarsening_and_refinement "
+                      "before refining the mesh."));
+    dof_handler.distribute_dofs(fe);
+    std::vector<TrilinosWrappers::MPI::Vector>   owned(2 * normal.size());
+    std::vector<TrilinosWrappers::MPI::Vector *> pointers;
+    for (auto &v : owned)
+      {
+        reinit_vector(v, false);
+        pointers.push_back(&v);
+      }
+    transfer->interpolate(pointers);
+    transfer.reset();
+    set_all(owned);
+  }
+
+
+
+  template <int dim>
+  void
+  LevelSetFields<dim>::prepare_for_serialization()
+  {
+    transfer =
+      std::make_unique<parallel::distributed::
+                         SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>>(
+        dof_handler);
+    transfer->prepare_for_serialization(all_fields());
+  }
+
+
+
+  template <int dim>
+  void
+  LevelSetFields<dim>::deserialize(const unsigned int n_cracks)
+  {
+    dof_handler.distribute_dofs(fe);
+    std::vector<TrilinosWrappers::MPI::Vector>   owned(2 * n_cracks);
+    std::vector<TrilinosWrappers::MPI::Vector *> pointers;
+    for (auto &v : owned)
+      {
+        reinit_vector(v, false);
+        pointers.push_back(&v);
+      }
+    transfer =
+      std::make_unique<parallel::distributed::
+                         SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>>(
+        dof_handler);
+    transfer->deserialize(pointers);
+    transfer.reset();
+    set_all(owned);
   }
 
 

@@ -156,12 +156,7 @@ namespace xcrack
     if (!enrichment ||
         !(enrichment->is_split(cell) || enrichment->is_tip(cell)))
       return {};
-    std::vector<double> lsn, lst;
-    for (const unsigned int v : cell->vertex_indices())
-      {
-        lsn.push_back(enrichment->crack_of(cell).lsn(cell->vertex(v)));
-        lst.push_back(enrichment->crack_of(cell).lst(cell->vertex(v)));
-      }
+    const auto [lsn, lst] = enrichment->level_set_values(cell);
     // Where the front crosses a 3D cell, four boxes per direction
     // (CellQuadrature::lip_rule; 2D tip cells are split exactly).
     // On the lips of a tip cell the jumps of the branch functions grow like

@@ -100,10 +100,7 @@ namespace xcrack
       {
         EnrichmentParameters enrichment_parameters;
         enrichment_parameters.parse_parameters(prm);
-        std::vector<const CrackGeometry<dim> *> crack_list;
-        for (unsigned int c = 0; c < cracks.size(); ++c)
-          crack_list.push_back(&cracks[c]);
-        enrichment = std::make_unique<Enrichment<dim>>(crack_list,
+        enrichment = std::make_unique<Enrichment<dim>>(cracks.size(),
                                                        degree,
                                                        enrichment_parameters);
         // Several cracks: classify the coarse mesh once now, so that
@@ -112,7 +109,8 @@ namespace xcrack
         if (cracks.size() > 1)
           {
             DoFHandler<dim> probe(triangulation);
-            enrichment->set_fe_indices(probe);
+            level_sets.initialize(cracks.shapes());
+            enrichment->set_fe_indices(probe, level_sets);
           }
         // Gauss rules per element: the cells of the tip zone carry the
         // non-polynomial branch functions and get two more points.

@@ -15,15 +15,20 @@ namespace xcrack
   void
   Simulator<dim>::setup_system()
   {
+    // The cracks' fields on this mesh (interpolated from their shapes: the
+    // cracks do not move yet), the cells they enrich, and the fields
+    // fitted to the vertices the enrichment chose; gathering ties the
+    // branch DoFs along the fronts they give.
+    update_level_sets();
     {
       TimerOutput::Scope t(*timer, "setup");
       dof_handler.reinit(triangulation);
       if (enrichment)
-        enrichment->set_fe_indices(dof_handler);
+        {
+          enrichment->set_fe_indices(dof_handler, level_sets);
+          level_sets.subtract_from_lsn(enrichment->lsn_shift());
+        }
     }
-    // The level-set fields follow the enrichment's fit-to-vertex shifts;
-    // gathering ties the branch DoFs along the fronts they give.
-    update_level_sets();
     std::vector<std::vector<std::vector<FrontPoint<dim>>>> fronts;
     if (enrichment && enrichment->get_parameters().gather)
       for (unsigned int c = 0; c < cracks.size(); ++c)
@@ -79,9 +84,7 @@ namespace xcrack
     if (cracks.size() == 0)
       return;
     TimerOutput::Scope t(*timer, "levelset");
-    level_sets.update(cracks,
-                      enrichment ? enrichment->lsn_shift() :
-                                   std::vector<std::vector<double>>());
+    level_sets.initialize(cracks.shapes());
   }
 
 

@@ -5,8 +5,8 @@
 namespace xcrack
 {
   template <int dim>
-  BranchFunction<dim>::BranchFunction(const CrackGeometry<dim> &crack,
-                                      const unsigned int        index)
+  BranchFunction<dim>::BranchFunction(const LevelSetFunctions<dim> &crack,
+                                      const unsigned int            index)
     : crack(crack)
     , index(index)
   {
@@ -106,7 +106,7 @@ namespace xcrack
     if (r == 0)
       return Tensor<1, dim>(); // singular; quadrature points avoid the front
 
-    const auto [grad_n, grad_t]     = level_set_gradients(crack, p);
+    const auto [grad_n, grad_t]     = crack.gradients(p);
     const auto           values     = polar_values(r, polar_angle(n, t));
     const Tensor<1, dim> grad_r     = (n * grad_n + t * grad_t) / r;
     const Tensor<1, dim> grad_theta = (t * grad_n - n * grad_t) / (r * r);

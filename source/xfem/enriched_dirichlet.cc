@@ -210,8 +210,19 @@ namespace xcrack
             const auto face = cell->face(f);
             if (!face->at_boundary())
               continue;
-            const CrackGeometry<dim> &crack = enrichment.crack_of(cell);
-            const auto                bc =
+            const LevelSetFunctions<dim> &crack = enrichment.crack_of(cell);
+            // lsn at the cell's vertices, by vertex index: the crossings of
+            // the face's edges come from these, not from evaluations at the
+            // vertices (whose round-off would pick a side where the crack
+            // was fitted to a vertex).
+            std::map<unsigned int, double> vertex_lsn;
+            {
+              const std::vector<double> lsn =
+                enrichment.level_set_values(cell).first;
+              for (const unsigned int v : cell->vertex_indices())
+                vertex_lsn[cell->vertex_index(v)] = lsn[v];
+            }
+            const auto bc =
               boundary_conditions.dirichlet.find(face->boundary_id());
             if (bc == boundary_conditions.dirichlet.end())
               continue;
@@ -263,10 +274,26 @@ namespace xcrack
             for (const auto &[group, members] : groups)
               {
                 // The data of this face's side at the node: evaluate just
-                // inside the face.
+                // inside the face. Where fit to vertex moved the crack
+                // through the node, the data still has its crack where it
+                // was, |shift| away: evaluate beyond that.
+                double hair = 1e-10;
+                if (group < face->n_vertices())
+                  {
+                    const auto  &shifts = enrichment.lsn_shift();
+                    const double shift =
+                      (enrichment.crack_index(cell) < shifts.size() &&
+                           !shifts[enrichment.crack_index(cell)].empty() ?
+                         shifts[enrichment.crack_index(cell)]
+                               [face->vertex_index(group)] :
+                         0.);
+                    hair =
+                      std::max(hair,
+                               2 * std::abs(shift) /
+                                 positions[group].distance(face->center()));
+                  }
                 const Point<dim> x =
-                  positions[group] +
-                  1e-10 * (face->center() - positions[group]);
+                  positions[group] + hair * (face->center() - positions[group]);
                 const int side = (crack.lsn(x) >= 0 ? 1 : -1);
                 bc->second->vector_value(x, g);
                 // A face the crack cuts (a mouth) also holds the other side:
@@ -284,7 +311,12 @@ namespace xcrack
                       (dim == 2 ? face->vertex(0) : face->line(l)->vertex(0));
                     const Point<dim> b =
                       (dim == 2 ? face->vertex(1) : face->line(l)->vertex(1));
-                    const double la = crack.lsn(a), lb = crack.lsn(b);
+                    const double la =
+                      vertex_lsn.at(dim == 2 ? face->vertex_index(0) :
+                                               face->line(l)->vertex_index(0));
+                    const double lb =
+                      vertex_lsn.at(dim == 2 ? face->vertex_index(1) :
+                                               face->line(l)->vertex_index(1));
                     if (la * lb >= 0)
                       continue;
                     const Point<dim> crossing = a + la / (la - lb) * (b - a);
@@ -292,8 +324,14 @@ namespace xcrack
                     if (!beyond ||
                         crossing.distance(positions[group]) < nearest)
                       {
+                        // Beyond by a hair of the edge, but never past its
+                        // far end (a crack very near a vertex).
                         nearest = crossing.distance(positions[group]);
-                        beyond  = crossing + 1e-10 * (far_end - crossing);
+                        const double step =
+                          std::min(1e-10 * a.distance(b),
+                                   0.5 * crossing.distance(far_end));
+                        beyond = crossing + step * (far_end - crossing) /
+                                              crossing.distance(far_end);
                       }
                   }
                 if (beyond)

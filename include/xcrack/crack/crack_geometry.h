@@ -57,7 +57,7 @@ namespace xcrack
 
 
   /**
-   * Where a crack is, as a pair of signed distance functions (level sets):
+   * A pair of level sets as functions of the position:
    *
    * - lsn, the normal level set: signed distance to the crack surface
    *   extended beyond the front, positive on the side its normal points to;
@@ -70,16 +70,16 @@ namespace xcrack
    * points to the lsn > 0 side; the frame of each FrontPoint is the
    * reference).
    *
-   * Analytic shapes implement this exactly; a crack given by a surface mesh
-   * computes it by projection. Everything else in xcrack (level-set fields
-   * on the mesh, enrichment, quadrature, K extraction) sees only this
-   * interface.
+   * The enrichment functions (jump and branch functions) evaluate this:
+   * during a run, the interpolants of a crack's level-set fields in one
+   * cell (CellLevelSets); in tests and for the initial shapes, the
+   * analytic CrackGeometry.
    */
   template <int dim>
-  class CrackGeometry
+  class LevelSetFunctions
   {
   public:
-    virtual ~CrackGeometry() = default;
+    virtual ~LevelSetFunctions() = default;
 
     /// Normal level set at @p p.
     virtual double
@@ -89,6 +89,33 @@ namespace xcrack
     virtual double
     lst(const Point<dim> &p) const = 0;
 
+    /**
+     * (grad lsn, grad lst) at @p p. By default central differences with a
+     * step of 1e-6 of the size of the coordinates (the level sets are
+     * smooth near a front: error ~ step^2); the branch functions'
+     * derivatives need them.
+     */
+    virtual std::pair<Tensor<1, dim>, Tensor<1, dim>>
+    gradients(const Point<dim> &p) const;
+  };
+
+
+
+  /**
+   * The shape a crack is given in the parameter file: its level sets
+   * everywhere (LevelSetFunctions), its front with local frames, and its
+   * extent. Analytic shapes implement this exactly; a crack given by a
+   * surface mesh computes it by projection.
+   *
+   * A shape only initialises a crack: the Simulator interpolates its level
+   * sets on the mesh (LevelSetFields), and from there on the fields are
+   * the crack for everything downstream (enrichment, rules, fronts, K
+   * extraction, propagation).
+   */
+  template <int dim>
+  class CrackGeometry : public LevelSetFunctions<dim>
+  {
+  public:
     /**
      * The front with local frames: the tips of a 2D crack, or @p n_points
      * points along a 3D front, ordered along it with their abscissa s.
@@ -111,19 +138,6 @@ namespace xcrack
     locate_in(const Triangulation<dim> &)
     {}
   };
-
-
-
-  /**
-   * The gradients of @p crack's level sets at @p p: (grad lsn, grad lst),
-   * by central differences with a step of 1e-6 of the size of the
-   * coordinates (the level sets are smooth near a front: error ~ step^2).
-   * The branch functions' derivatives and the tip frame of DOF gathering
-   * both need them.
-   */
-  template <int dim>
-  std::pair<Tensor<1, dim>, Tensor<1, dim>>
-  level_set_gradients(const CrackGeometry<dim> &crack, const Point<dim> &p);
 
 
 

@@ -60,6 +60,10 @@ namespace xcrack
     const CrackGeometry<dim> &
     operator[](const unsigned int i) const;
 
+    /// The shapes of all cracks, in order (for LevelSetFields::initialize).
+    std::vector<const CrackGeometry<dim> *>
+    shapes() const;
+
   private:
     std::vector<std::unique_ptr<CrackGeometry<dim>>> cracks;
   };

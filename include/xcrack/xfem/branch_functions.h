@@ -23,16 +23,18 @@ namespace xcrack
    * a 3D front. F1 jumps across the lips (theta = +-pi); on the crack
    * (lsn = 0) theta = +pi, the side H(0) = +1 belongs to.
    *
-   * The gradient combines the analytic derivatives in (r, theta) with
-   * central differences of the level sets, which are smooth near the front
-   * (the singularity is in F, not in lsn and lst).
+   * The gradient combines the analytic derivatives in (r, theta) with the
+   * gradients of the level sets, which are smooth near the front (the
+   * singularity is in F, not in lsn and lst).
    */
   template <int dim>
   class BranchFunction : public Function<dim>
   {
   public:
-    /// Branch function F_{@p index + 1} of @p crack, @p index < 4.
-    BranchFunction(const CrackGeometry<dim> &crack, const unsigned int index);
+    /// Branch function F_{@p index + 1} of the level sets @p crack,
+    /// @p index < 4.
+    BranchFunction(const LevelSetFunctions<dim> &crack,
+                   const unsigned int            index);
 
     double
     value(const Point<dim> &p, const unsigned int component = 0) const override;
@@ -57,10 +59,10 @@ namespace xcrack
     std::array<double, 3>
     polar_values(const double r, const double theta) const;
 
-    const CrackGeometry<dim> &crack;
-    const unsigned int        index;
-    double                    cutoff_inner = 0;
-    double                    cutoff_outer = 0;
+    const LevelSetFunctions<dim> &crack;
+    const unsigned int            index;
+    double                        cutoff_inner = 0;
+    double                        cutoff_outer = 0;
   };
 } // namespace xcrack
 

@@ -10,8 +10,9 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <xcrack/crack/crack_geometry.h>
+#include <xcrack/crack/level_set_fields.h>
 #include <xcrack/xfem/branch_functions.h>
-#include <xcrack/xfem/fitted_crack.h>
+#include <xcrack/xfem/cell_level_sets.h>
 
 #include <array>
 #include <map>
@@ -32,7 +33,7 @@ namespace xcrack
   class HeavisideFunction : public Function<dim>
   {
   public:
-    explicit HeavisideFunction(const CrackGeometry<dim> &crack);
+    explicit HeavisideFunction(const LevelSetFunctions<dim> &crack);
 
     double
     value(const Point<dim> &p, const unsigned int component = 0) const override;
@@ -42,7 +43,7 @@ namespace xcrack
              const unsigned int component = 0) const override;
 
   private:
-    const CrackGeometry<dim> &crack;
+    const LevelSetFunctions<dim> &crack;
   };
 
 
@@ -107,7 +108,10 @@ namespace xcrack
    * multiply Q1 shape functions also for Q2: they carry the singularity,
    * and only vertex DoFs make the Dirichlet treatment at the front simple.
    *
-   * Cells are classified from the level sets at their vertices:
+   * Cells are classified from the values of the cracks' level-set fields
+   * (LevelSetFields) at their vertices, and every enriched cell evaluates
+   * the jump and branch functions of the interpolants of those values
+   * (CellLevelSets): the crack the rules integrate on. The classification:
    *
    * - tip: the front {lsn = 0, lst = 0} of the Q1 interpolants touches the
    *   closed cell (CellQuadrature::front_points), also when the front runs
@@ -152,9 +156,9 @@ namespace xcrack
    * Fit to vertex (`Fit to vertex tolerance` tau > 0): where the crack
    * passes within tau times the shortest adjacent edge of a vertex (on
    * the crack side of the front), the crack is moved through the vertex:
-   * lsn is shifted by the interpolant of its value there (FittedCrack),
-   * in the rules, the classification and the enrichment functions of the
-   * cells around that vertex alike. The cut then runs through the node
+   * its lsn value there becomes zero, in the rules, the classification and
+   * the enrichment functions of the cells around that vertex alike (and,
+   * through lsn_shift(), in the fields). The cut then runs through the node
    * instead of leaving a sliver of relative size tau, which bounds the
    * smallest side of a cut support away from zero; the crack moves by at
    * most tau h. It complements the volume criterion, which drops the jump
@@ -185,15 +189,10 @@ namespace xcrack
     static constexpr unsigned char invalid_crack = 255;
 
     /**
-     * Enrich the displacement space of degree @p degree by @p cracks (not
-     * owned; they must outlive this object).
+     * Enrich the displacement space of degree @p degree by @p n_cracks
+     * cracks, whose level-set fields set_fe_indices() reads.
      */
-    Enrichment(const std::vector<const CrackGeometry<dim> *> &cracks,
-               const unsigned int                             degree,
-               const EnrichmentParameters                    &parameters);
-
-    /// Enrich by the one crack @p crack.
-    Enrichment(const CrackGeometry<dim>   &crack,
+    Enrichment(const unsigned int          n_cracks,
                const unsigned int          degree,
                const EnrichmentParameters &parameters);
 
@@ -204,11 +203,13 @@ namespace xcrack
     get_parameters() const;
 
     /**
-     * Classify the cells of @p dof_handler's mesh (owned and ghost) and set
-     * the active FE index of the owned cells. Call before distribute_dofs().
+     * Classify the cells of @p dof_handler's mesh (owned and ghost) by the
+     * cracks' @p fields (on the same mesh) and set the active FE index of
+     * the owned cells. Call before distribute_dofs().
      */
     void
-    set_fe_indices(DoFHandler<dim> &dof_handler);
+    set_fe_indices(DoFHandler<dim>           &dof_handler,
+                   const LevelSetFields<dim> &fields);
 
     /**
      * Add to @p constraints the zero constraints of the enriched DoFs that
@@ -264,9 +265,21 @@ namespace xcrack
     const std::vector<std::vector<double>> &
     lsn_shift() const;
 
-    /// The crack whose functions @p cell evaluates (see crack_index()).
-    const CrackGeometry<dim> &
+    /**
+     * The level sets whose functions @p cell evaluates (those of its crack,
+     * see crack_index(), fitted to vertices): only for the cells with
+     * enriched functions (a non-plain FE index), owned or ghost.
+     */
+    const LevelSetFunctions<dim> &
     crack_of(const typename Triangulation<dim>::cell_iterator &cell) const;
+
+    /**
+     * The values (lsn, lst) of @p cell's crack at its vertices, fitted to
+     * vertices: what its rules are built from (owned and ghost cells).
+     */
+    std::pair<std::vector<double>, std::vector<double>>
+    level_set_values(
+      const typename Triangulation<dim>::cell_iterator &cell) const;
 
     /// Whether @p cell is split by the crack (and has a special rule).
     bool
@@ -340,6 +353,18 @@ namespace xcrack
     cell_shift(const typename Triangulation<dim>::cell_iterator &cell,
                const unsigned int                                c) const;
 
+    /**
+     * The frame (rows e1, e2[, e3]) of crack @p c's level sets at vertex
+     * @p v: e1 along grad lst, e2 along grad lsn made normal to e1, the
+     * gradients averaged over the owned and ghost cells around the vertex.
+     * Smooth along the front and across the tip zone, which is what DOF
+     * gathering needs of it.
+     */
+    Tensor<2, dim>
+    vertex_frame(const Triangulation<dim> &tria,
+                 const unsigned int        c,
+                 const unsigned int        v) const;
+
     /// Decide which vertices crack @p c is fitted to (vertex_shift[c]).
     void
     fit_to_vertices(const Triangulation<dim> &tria, const unsigned int c);
@@ -358,28 +383,33 @@ namespace xcrack
     CrackZone
     classify(const Triangulation<dim> &tria, const unsigned int c) const;
 
-    const std::vector<const CrackGeometry<dim> *> cracks;
-    const EnrichmentParameters                    parameters;
+    const unsigned int         n_cracks;
+    const EnrichmentParameters parameters;
     /// Gauss points per direction of the assembly's rules (degree + 1).
-    const unsigned int                                   assembly_points_1d;
-    std::vector<std::unique_ptr<HeavisideFunction<dim>>> heaviside_functions;
-    /// branch_functions[crack][k] = F_{k+1} of that crack.
-    std::vector<std::vector<std::unique_ptr<BranchFunction<dim>>>>
-      branch_functions;
+    const unsigned int assembly_points_1d;
+    /// The cracks' level sets at the vertices ([crack][vertex index]; set
+    /// for the vertices of owned and ghost cells), as set_fe_indices() read
+    /// them from the fields.
+    std::vector<std::vector<double>> vertex_lsn, vertex_lst;
     /// Fit-to-vertex: vertex_shift[crack][vertex] is subtracted from lsn (the
     /// value of lsn at a fitted vertex, 0 elsewhere).
     std::vector<std::vector<double>> vertex_shift;
-    /// The crack and functions of a cell next to a fitted vertex, with the
-    /// shifted lsn (owned and ghost cells; by active cell index).
-    struct FittedCell
+    /// The level sets and the functions of an enriched cell.
+    struct CellFunctions
     {
-      std::unique_ptr<FittedCrack<dim>>                 crack;
-      std::unique_ptr<HeavisideFunction<dim>>           heaviside;
+      CellFunctions(
+        const typename Triangulation<dim>::cell_iterator         &cell,
+        const std::array<double, CellLevelSets<dim>::n_vertices> &lsn,
+        const std::array<double, CellLevelSets<dim>::n_vertices> &lst);
+      CellLevelSets<dim>                                level_sets;
+      HeavisideFunction<dim>                            heaviside;
       std::vector<std::unique_ptr<BranchFunction<dim>>> branches;
     };
-    std::map<unsigned int, FittedCell> fitted_cells;
-    hp::FECollection<dim>              fe_collection;
-    std::vector<CellKind>              cell_kind;
+    /// By active cell index: the owned and ghost cells with enriched
+    /// functions (null for the others).
+    std::vector<std::unique_ptr<CellFunctions>> cell_functions;
+    hp::FECollection<dim>                       fe_collection;
+    std::vector<CellKind>                       cell_kind;
     /// Gathering (make_constraints()): the tied DoFs and the masters'.
     IndexSet gathered_dofs;
     IndexSet master_dofs;
