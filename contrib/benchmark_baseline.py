@@ -36,7 +36,7 @@ subsection Mesh
   set Initial global refinement = 0
 end
 subsection Mesh refinement
-  set Number of cycles = 1
+  set Number of meshes = 1
 end
 subsection Linear solver
   set Type = {solver}

@@ -26,7 +26,7 @@ OFF_NODE = ("subsection Cracks\n  subsection Crack 1\n    set Start point = -2, 
             "    set End point = 0.07, 0.03\n  end\nend\n"
             "subsection Exact solution\n  set Tip = 0.07, 0.03\nend\n")
 
-# (label, benchmark, degree, cycles, enrichment entries, extra prm text)
+# (label, benchmark, degree, meshes, enrichment entries, extra prm text)
 runs = [
     ("mode I, Q1, jump only", "exact_mode_I_2d", 1, 6, NONE, ""),
     ("mode I, Q1, topological", "exact_mode_I_2d", 1, 6, TOPOLOGICAL, ""),
@@ -41,14 +41,14 @@ runs = [
 ]
 
 
-def run(work, benchmark, degree, cycles, enrichment, extra, ranks):
+def run(work, benchmark, degree, meshes, enrichment, extra, ranks):
     return run_xcrack(
         f"include {top}/prm/benchmarks/{benchmark}.prm\n"
         f"set Output directory = {work}/out\n"
         f"subsection Discretization\n  set Degree = {degree}\n"
         "end\n"
         f"subsection Enrichment\n  {enrichment}\nend\n"
-        f"subsection Mesh refinement\n  set Number of cycles = {cycles}\nend\n"
+        f"subsection Mesh refinement\n  set Number of meshes = {meshes}\nend\n"
         "subsection Output\n  set Timing summary = false\nend\n" + extra,
         work, ranks)
 
@@ -108,14 +108,14 @@ def plot(results):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--ranks", type=int, default=2, help="ranks for the 3D runs")
-    parser.add_argument("--quick", action="store_true", help="two cycles fewer")
+    parser.add_argument("--quick", action="store_true", help="two meshes fewer")
     args = parser.parse_args()
     results = []
     with tempfile.TemporaryDirectory() as work:
-        for label, benchmark, degree, cycles, enrichment, extra in runs:
+        for label, benchmark, degree, meshes, enrichment, extra in runs:
             dim = 3 if benchmark.endswith("3d") else 2
-            cycles = max(2, cycles - 2) if args.quick else cycles
-            rows = run(work, benchmark, degree, cycles, enrichment, extra,
+            meshes = max(2, meshes - 2) if args.quick else meshes
+            rows = run(work, benchmark, degree, meshes, enrichment, extra,
                        args.ranks if dim == 3 else 1)
             print_table(label, rows, dim)
             results.append((label, dim, rows))

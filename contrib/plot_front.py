@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """Plot K_I, K_II, K_III and G along the crack front from the
-front_<cycle>.csv files of a run (one figure per file, or the files of
-several cycles overlaid), and print them as a table.
+front_<step>.csv files of a run (one figure per file, or the files of
+several steps or meshes overlaid), and print them as a table.
 
-    /usr/bin/python3 contrib/plot_front.py output/sif_inclined_2d            # last cycle
-    /usr/bin/python3 contrib/plot_front.py output/sif_inclined_2d --all      # every cycle
+    /usr/bin/python3 contrib/plot_front.py output/sif_inclined_2d            # the last one
+    /usr/bin/python3 contrib/plot_front.py output/sif_inclined_2d --all      # every one
 
 Along a 3D front the abscissa s is the horizontal axis; at the tips of a 2D
 crack (one row per tip) the tip index is. The figure is written next to the
@@ -25,7 +25,7 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("directory", help="the run's output directory")
     parser.add_argument("--all", action="store_true",
-                        help="overlay every cycle, not only the last")
+                        help="overlay every file, not only the last")
     args = parser.parse_args()
     files = sorted(glob.glob(os.path.join(args.directory, "front_*.csv")))
     if not files:

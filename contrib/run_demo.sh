@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
 # Quick start, command 1: build xcrack (Release) if needed and run the demo
-# scene prm/demo.prm. Results go to output/demo/ (VTU fields and CSV tables).
+# scene prm/demo.prm, a fatigue crack growing in a plate with a hole (well
+# under a minute). Results go to output/demo/: the figures of the growth
+# (PNG), the tables (CSV) and the fields (VTU, for ParaView).
 set -euo pipefail
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$top/contrib/build.sh" release
 cd "$top"
 "$top/build/release/xcrack" prm/demo.prm
-echo "Results in $top/output/demo (open solution.pvd in ParaView)."
+/usr/bin/python3 "$top/contrib/plot_growth.py" output/demo > /dev/null
+echo "Results in $top/output/demo: growth_cycles.png, growth_path.png;"
+echo "open solution.pvd and crack.pvd in ParaView to watch the crack grow."

@@ -75,7 +75,7 @@ end
     return row
 
 
-def case1(work, cycles, zone, radius, gather):
+def case1(work, meshes, zone, radius, gather):
     """Last row of statistics.csv of Case 1 in 2D with the given zone."""
     prm = os.path.join(work, "run.prm")
     with open(prm, "w") as f:
@@ -89,7 +89,7 @@ subsection Fracture parameters
   set Compute = false
 end
 subsection Mesh refinement
-  set Number of cycles = {cycles}
+  set Number of meshes = {meshes}
 end
 subsection Enrichment
   set Tip enrichment = {zone}

@@ -5,7 +5,7 @@ its convergence rate next to the energy rate, the independence of the
 crowns, and the wall time of the extraction against the solve.
 
     contrib/build.sh release
-    /usr/bin/python3 contrib/study_sif.py [--cycles 6] [--runs 3]
+    /usr/bin/python3 contrib/study_sif.py [--meshes 6] [--runs 3]
 
 Prints markdown tables (doc/verification.md) and writes
 doc/figures/sif_convergence.png.
@@ -28,11 +28,11 @@ crowns = [("1, 2", "cells"), ("2, 4", "cells"), ("3, 6", "cells"),
           ("0.2, 0.4", "absolute")]
 
 
-def run(benchmark, cycles, crown, work):
+def run(benchmark, meshes, crown, work):
     text = (f"include {os.path.join(top, 'prm', 'benchmarks', benchmark)}\n"
             f"set Output directory = {os.path.join(work, 'out')}\n"
             "subsection Output\n  set Timing summary = false\nend\n"
-            f"subsection Mesh refinement\n  set Number of cycles = {cycles}\nend\n"
+            f"subsection Mesh refinement\n  set Number of meshes = {meshes}\nend\n"
             f"subsection Fracture parameters\n  set Crown radii = {crown[0]}\n"
             f"  set Crown unit = {crown[1]}\nend\n")
     return run_xcrack(text, work)
@@ -48,7 +48,7 @@ def rate(rows, column, r):
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("--cycles", type=int, default=6)
+    parser.add_argument("--meshes", type=int, default=6)
     parser.add_argument("--runs", type=int, default=3)
     args = parser.parse_args()
     results = {}
@@ -57,7 +57,7 @@ def main():
             for crown in crowns:
                 times = []
                 for _ in range(args.runs):
-                    rows = run(benchmark, args.cycles, crown, work)
+                    rows = run(benchmark, args.meshes, crown, work)
                     times.append([(float(r["t_fracture"]), float(r["t_solve"]))
                                   for r in rows])
                 median = [(statistics.median(t[r][0] for t in times),

@@ -1,20 +1,20 @@
 #!/usr/bin/env python3
 """K along 3D fronts (BENCHMARKS.md Cases 5 and 6): the error of each K
-against the reference per cycle of the benchmarks, the convergence of
+against the reference per mesh of the benchmarks, the convergence of
 each front basis, and the cost and gain of each choice of the extraction
 (crowns, basis, front segments, tip rule) on the penny.
 
     contrib/build.sh release
-    /usr/bin/python3 contrib/study_sif_3d.py convergence [--cycles 6] [--direct]
-    /usr/bin/python3 contrib/study_sif_3d.py bases [--cycles 6] [--jobs 2]
-    /usr/bin/python3 contrib/study_sif_3d.py trade [--cycles 6] [--jobs 2]
+    /usr/bin/python3 contrib/study_sif_3d.py convergence [--meshes 6] [--direct]
+    /usr/bin/python3 contrib/study_sif_3d.py bases [--meshes 6] [--jobs 2]
+    /usr/bin/python3 contrib/study_sif_3d.py trade [--meshes 6] [--jobs 2]
 
 Prints markdown tables (doc/verification.md, doc/performance.md);
 `convergence` also writes doc/figures/sif_convergence_3d.png, `bases`
-doc/figures/sif_bases_3d.png. A six-cycle run of one benchmark takes
+doc/figures/sif_bases_3d.png. A six-mesh run of one benchmark takes
 about five minutes on one core.
 
-`bases`: the K_I error of the penny per cycle for each front basis (the
+`bases`: the K_I error of the penny per mesh for each front basis (the
 rate against the front cell size h). `trade`: on the penny's last mesh,
 one knob at a time against the shipped choice (crowns 2-4 cells, Legendre
 degree 5, 6 tip quadrature points): the crowns (their independence: the
@@ -33,7 +33,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from xcrack_runs import run_xcrack, top  # noqa: E402
+from xcrack_runs import front_file, run_xcrack, top  # noqa: E402
 
 benchmarks = {
     "penny, tension": "sif_penny_3d.prm",
@@ -42,15 +42,15 @@ benchmarks = {
 }
 
 
-def run(benchmark, cycles, work, smoothing=None, fracture="", enrichment="",
+def run(benchmark, meshes, work, smoothing=None, fracture="", enrichment="",
         extra=""):
-    """Run a benchmark with `cycles` cycles in work/out; smoothing is
+    """Run a benchmark with `meshes` meshes in work/out; smoothing is
     (basis, Legendre degree, front segments); fracture and enrichment are
     extra lines for those subsections, extra more parameter text."""
     text = (f"include {os.path.join(top, 'prm', 'benchmarks', benchmark)}\n"
             f"set Output directory = {os.path.join(work, 'out')}\n"
             "subsection Output\n  set Timing summary = false\nend\n"
-            f"subsection Mesh refinement\n  set Number of cycles = {cycles}\nend\n")
+            f"subsection Mesh refinement\n  set Number of meshes = {meshes}\nend\n")
     if smoothing:
         fracture += (f"  set Smoothing = {smoothing[0]}\n"
                      f"  set Legendre degree = {smoothing[1]}\n"
@@ -62,20 +62,21 @@ def run(benchmark, cycles, work, smoothing=None, fracture="", enrichment="",
     return run_xcrack(text + extra, work)
 
 
-def front_k(work, step):
-    """K_I at the points of front_<step>.csv of a run in work/out."""
-    with open(os.path.join(work, "out", f"front_{step:03d}.csv")) as f:
+def front_k(work, rows):
+    """K_I at the points of the front file of the last row of a run in
+    work/out (front_000.<mesh>.csv of step 0 solved on several meshes)."""
+    with open(os.path.join(work, "out", front_file(rows[-1], len(rows)))) as f:
         return [float(r["K_I"]) for r in csv.DictReader(f)]
 
 
-def run_choices(choices, cycles, jobs, benchmark="sif_penny_3d.prm"):
+def run_choices(choices, meshes, jobs, benchmark="sif_penny_3d.prm"):
     """Run each (label, kwargs of run()) in its own directory, `jobs` at
     once; return {label: (statistics rows, K_I along the last front)}."""
     def one(choice):
         label, kwargs = choice
         with tempfile.TemporaryDirectory() as work:
-            rows = run(benchmark, cycles, work, **kwargs)
-            return label, (rows, front_k(work, int(rows[-1]["step"])))
+            rows = run(benchmark, meshes, work, **kwargs)
+            return label, (rows, front_k(work, rows))
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
         return dict(pool.map(one, choices))
 
@@ -91,15 +92,15 @@ def convergence(args):
     table = {}
     with tempfile.TemporaryDirectory() as work:
         for name, benchmark in benchmarks.items():
-            rows = run(benchmark, args.cycles, work, extra=(DIRECT if args.direct
+            rows = run(benchmark, args.meshes, work, extra=(DIRECT if args.direct
                                                             else ""))
             table[name] = rows
             print(f"\n{name} ({benchmark})\n")
-            print("| cycle | DoFs | K_I error | K_II error | K_III error | "
+            print("| mesh | DoFs | K_I error | K_II error | K_III error | "
                   "t_solve (s) | t_fracture (s) |")
             print("|---|---|---|---|---|---|---|")
             for r in rows:
-                print(f"| {r['step']} | {r['dofs']} | "
+                print(f"| {r['mesh']} | {r['dofs']} | "
                       f"{float(r['K_I_error']):.2e} | "
                       f"{float(r['K_II_error']):.2e} | "
                       f"{float(r['K_III_error']):.2e} | "
@@ -142,16 +143,16 @@ def bases(args):
                ("Lagrange", {"smoothing": ("lagrange", 0, 0)}),
                ("Lagrange regularised",
                 {"smoothing": ("lagrange regularized", 0, 0)})]
-    results = run_choices(choices, args.cycles, args.jobs)
-    print("\npenny (sif_penny_3d.prm), K_I error per cycle (h: front cell "
-          "size; rate: log2 of the error ratio to the previous cycle)\n")
+    results = run_choices(choices, args.meshes, args.jobs)
+    print("\npenny (sif_penny_3d.prm), K_I error per mesh (h: front cell "
+          "size; rate: log2 of the error ratio to the previous mesh)\n")
     labels = [c[0] for c in choices]
-    print("| cycle | h | DoFs | " + " | ".join(
+    print("| mesh | h | DoFs | " + " | ".join(
         f"{l} | rate" for l in labels) + " |")
     print("|---|---|---|" + "---|---|" * len(labels))
     first = results[labels[0]][0]
     for i, r in enumerate(first):
-        h = 2.0 ** (1 - int(r["step"]))
+        h = 2.0 ** (1 - int(r["mesh"]))
         cells = []
         for l in labels:
             rows = results[l][0]
@@ -159,7 +160,7 @@ def bases(args):
             rate = (f"{math.log2(float(rows[i - 1]['K_I_error']) / e):.2f}"
                     if i > 0 else "-")
             cells.append(f"{e:.2e} | {rate}")
-        print(f"| {r['step']} | {h:g} | {r['dofs']} | " + " | ".join(cells)
+        print(f"| {r['mesh']} | {h:g} | {r['dofs']} | " + " | ".join(cells)
               + " |")
     plot_bases(labels, {l: results[l][0] for l in labels})
 
@@ -172,9 +173,9 @@ def plot_bases(labels, rows_of):
     def draw(ax):
         for l in labels:
             rows = rows_of[l]
-            ax.loglog([2.0 ** (1 - int(r["step"])) for r in rows],
+            ax.loglog([2.0 ** (1 - int(r["mesh"])) for r in rows],
                       [float(r["K_I_error"]) for r in rows], "o-", label=l)
-        hs = [2.0 ** (1 - int(r["step"])) for r in first[-3:]]
+        hs = [2.0 ** (1 - int(r["mesh"])) for r in first[-3:]]
         ax.loglog(hs, [0.5 * h * h / hs[-1] ** 2 *
                        float(first[-1]["K_I_error"]) for h in hs],
                   "k--", lw=0.8, label="h^2")
@@ -210,12 +211,12 @@ def trade(args):
         ("tip rule 10 points", {"fracture": base, "enrichment":
                                 "  set Tip quadrature points = 10\n"}),
     ]
-    results = run_choices(choices, args.cycles, args.jobs)
+    results = run_choices(choices, args.meshes, args.jobs)
     rows0, k0 = results[choices[0][0]]
     mean0 = statistics.fmean(k0)
     t0 = float(rows0[-1]["t_fracture"])
     last0 = rows0[-1]
-    print(f"\npenny (sif_penny_3d.prm), cycle {last0['step']}: "
+    print(f"\npenny (sif_penny_3d.prm), mesh {last0['mesh']}: "
           f"{last0['dofs']} DoFs, t_solve {float(last0['t_solve']):.0f} s "
           f"(baseline); {args.jobs} run(s) at once\n")
     print("| choice | front points | K_I error | K_I min | K_I max | "
@@ -234,7 +235,7 @@ def trade(args):
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("study", choices=["convergence", "bases", "trade"])
-    parser.add_argument("--cycles", type=int, default=6)
+    parser.add_argument("--meshes", type=int, default=6)
     parser.add_argument("--jobs", type=int, default=1)
     parser.add_argument("--direct", action="store_true",
                         help="convergence: no gathering, direct solver")

@@ -11,7 +11,7 @@ time divided by that of the uncracked body on the same mesh (same boundary
 data, no crack), measured in the same run.
 
     contrib/build.sh release
-    python3 contrib/study_tip_enrichment.py [--runs 3] [--cycles 5]
+    python3 contrib/study_tip_enrichment.py [--runs 3] [--meshes 5]
 """
 import argparse
 import statistics
@@ -20,11 +20,11 @@ import tempfile
 from xcrack_runs import run_xcrack, top
 
 
-def run(work, benchmark, cycles, entries, ranks, repeats):
+def run(work, benchmark, meshes, entries, ranks, repeats):
     """Last row of statistics.csv, with median times over the repeats."""
     text = (f"include {top}/prm/benchmarks/{benchmark}.prm\n"
             f"set Output directory = {work}/out\n"
-            f"subsection Mesh refinement\n  set Number of cycles = {cycles}\nend\n"
+            f"subsection Mesh refinement\n  set Number of meshes = {meshes}\nend\n"
             "subsection Output\n  set Timing summary = false\nend\n" + entries)
     rows = [run_xcrack(text, work, ranks)[-1] for _ in range(repeats)]
     result = dict(rows[0])
@@ -47,10 +47,10 @@ UNCRACKED = ("subsection Cracks\n  set Number of cracks = 0\nend\n"
              "  set Enrichment radius = 0\nend\n")
 
 
-def study(work, benchmark, cycles, ranks, repeats, h):
+def study(work, benchmark, meshes, ranks, repeats, h):
     dim = 3 if benchmark.endswith("3d") else 2
-    base = run(work, benchmark, cycles, UNCRACKED, ranks, repeats)
-    print(f"\n**{benchmark}, {cycles} cycles (h = {h:g}), {ranks} rank(s), "
+    base = run(work, benchmark, meshes, UNCRACKED, ranks, repeats)
+    print(f"\n**{benchmark}, {meshes} meshes (h = {h:g}), {ranks} rank(s), "
           f"median of {repeats}.** Uncracked body on the same mesh: "
           f"{base['dofs']} DoFs, t_solve {base['t_solve']:.3f} s, "
           f"setup + assembly + solve {base['wall']:.3f} s.\n")
@@ -73,7 +73,7 @@ def study(work, benchmark, cycles, ranks, repeats, h):
         choices.append(("Q2, geometric r = 0.25",
                         enrichment("geometric", 0.25, degree=2)))
     for label, entries in choices:
-        r = run(work, benchmark, cycles, entries, ranks, repeats)
+        r = run(work, benchmark, meshes, entries, ranks, repeats)
         print(f"| {label} | {r['dofs']} | {r['enriched_dofs']} | "
               f"{float(r['energy_error']):.3e} | {r['wall']:.3f} | "
               f"{r['t_solve'] / base['t_solve']:.2f} |")
@@ -82,12 +82,12 @@ def study(work, benchmark, cycles, ranks, repeats, h):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--runs", type=int, default=3)
-    parser.add_argument("--cycles", type=int, default=5, help="2D cycles")
+    parser.add_argument("--meshes", type=int, default=5, help="2D meshes")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as work:
-        # 2D: 8 x 8 cells on [-1,1]^2 refined cycles - 1 times.
-        study(work, "exact_mode_I_2d", args.cycles, 1, args.runs,
-              0.25 / 2 ** (args.cycles - 1))
+        # 2D: 8 x 8 cells on [-1,1]^2 refined meshes - 1 times.
+        study(work, "exact_mode_I_2d", args.meshes, 1, args.runs,
+              0.25 / 2 ** (args.meshes - 1))
         # 3D: 4 x 4 x 4 cells refined twice (4096 cells).
         study(work, "exact_mode_I_3d", 3, 2, args.runs, 0.5 / 4)
 

@@ -24,3 +24,12 @@ def run_xcrack(prm_text, work, ranks=1):
     subprocess.run(command, check=True, env=env, stdout=subprocess.DEVNULL)
     with open(os.path.join(work, "out", "statistics.csv")) as f:
         return list(csv.DictReader(f))
+
+
+def front_file(row, n_meshes):
+    """The name of the front file of a statistics row: front_<step>.csv, or
+    front_<step>.<mesh>.csv for a step solved on n_meshes > 1 meshes."""
+    key = f"{int(row['step']):03d}"
+    if n_meshes > 1:
+        key += f".{int(row['mesh']):02d}"
+    return f"front_{key}.csv"

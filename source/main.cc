@@ -3,6 +3,8 @@
  *
  *   xcrack FILE.prm              run the scene of FILE.prm
  *   mpirun -np N xcrack FILE.prm the same on N ranks
+ *   xcrack --resume DIR          continue the propagation run whose output
+ *                                directory DIR holds a checkpoint
  *   xcrack --print-parameters    every parameter with default and documentation
  *
  * Exit codes: 0 success, 1 bad input (message names the culprit), 2 failure
@@ -26,6 +28,7 @@ namespace
   {
     out << "Usage: xcrack FILE.prm\n"
         << "       mpirun -np N xcrack FILE.prm\n"
+        << "       xcrack --resume OUTPUT_DIRECTORY\n"
         << "       xcrack --print-parameters\n";
   }
 } // namespace
@@ -37,13 +40,13 @@ main(int argc, char *argv[])
   Utilities::MPI::MPI_InitFinalize mpi_initialization(argc, argv, 1);
   const bool root = (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
 
-  if (argc != 2)
+  const std::string argument = (argc > 1 ? argv[1] : "");
+  if (argc != 2 && !(argc == 3 && argument == "--resume"))
     {
       if (root)
         print_usage(std::cerr);
       return 1;
     }
-  const std::string argument = argv[1];
 
   try
     {
@@ -63,8 +66,22 @@ main(int argc, char *argv[])
           return 0;
         }
 
-      xcrack::read_parameter_file(prm, argument);
-      xcrack::run(prm);
+      if (argument == "--resume")
+        {
+          // The run's own parameters, kept with the checkpoint; its results
+          // stay where they are.
+          const std::string directory = argv[2];
+          xcrack::read_parameter_file(prm,
+                                      xcrack::checkpoint_of(directory) +
+                                        "/parameters.prm");
+          prm.set("Output directory", directory);
+          xcrack::run(prm, directory);
+        }
+      else
+        {
+          xcrack::read_parameter_file(prm, argument);
+          xcrack::run(prm);
+        }
     }
   catch (const xcrack::InputError &e)
     {

@@ -24,6 +24,13 @@ namespace xcrack
                         "plane strain",
                         Patterns::Selection("plane strain|plane stress"),
                         "Out-of-plane assumption of 2D runs (ignored in 3D).");
+      prm.declare_entry("Fracture toughness",
+                        "0",
+                        Patterns::Double(0),
+                        "K_Ic, in the units of the stress intensity factors "
+                        "(0: not given). Needed by the growth laws forman "
+                        "and quasi-static and by the termination criterion "
+                        "'fracture toughness'.");
     }
     prm.leave_subsection();
   }
@@ -40,6 +47,7 @@ namespace xcrack
       plane_model =
         (prm.get("Plane model") == "plane strain" ? PlaneModel::plane_strain :
                                                     PlaneModel::plane_stress);
+      fracture_toughness = prm.get_double("Fracture toughness");
     }
     prm.leave_subsection();
 
@@ -71,6 +79,16 @@ namespace xcrack
     if (dim == 2 && plane_model == PlaneModel::plane_stress)
       return 2. * lambda_3d * mu() / (lambda_3d + 2. * mu());
     return lambda_3d;
+  }
+
+
+
+  double
+  Material::e_prime(const unsigned int dim) const
+  {
+    if (dim == 2 && plane_model == PlaneModel::plane_stress)
+      return youngs_modulus;
+    return youngs_modulus / (1. - poisson_ratio * poisson_ratio);
   }
 
 

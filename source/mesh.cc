@@ -94,7 +94,8 @@ namespace xcrack
 
   template <int dim>
   void
-  MeshDescription::create(Triangulation<dim> &triangulation) const
+  MeshDescription::create(Triangulation<dim> &triangulation,
+                          const bool          refine) const
   {
     if (type == "box")
       {
@@ -164,13 +165,14 @@ namespace xcrack
           }
       }
 
-    triangulation.refine_global(initial_global_refinement);
+    if (refine)
+      triangulation.refine_global(initial_global_refinement);
   }
 
 
 
   template void
-  MeshDescription::create(Triangulation<2> &) const;
+  MeshDescription::create(Triangulation<2> &, const bool) const;
   template void
-  MeshDescription::create(Triangulation<3> &) const;
+  MeshDescription::create(Triangulation<3> &, const bool) const;
 } // namespace xcrack

@@ -37,7 +37,7 @@ namespace xcrack
       prm.declare_entry("Write vtu",
                         "true",
                         Patterns::Bool(),
-                        "Write solution-<cycle>.pvtu files and solution.pvd.");
+                        "Write solution-<step>.pvtu files and solution.pvd.");
       prm.declare_entry("Condition number up to dofs",
                         "0",
                         Patterns::Integer(0, 20000),
@@ -49,7 +49,14 @@ namespace xcrack
                         "true",
                         Patterns::Bool(),
                         "Print the wall-time summary at the end of the run "
+                        "and the wall times of the steps of a growth run "
                         "(tests switch it off to keep their output stable).");
+      prm.declare_entry("Detailed screen",
+                        "false",
+                        Patterns::Bool(),
+                        "A growth run prints one line per step; true adds "
+                        "the detail of each solve (mesh, crack, K per tip or "
+                        "front), as a static analysis prints it.");
     }
     prm.leave_subsection();
   }
@@ -90,6 +97,7 @@ namespace xcrack
     {
       write_vtu              = prm.get_bool("Write vtu");
       timing_summary         = prm.get_bool("Timing summary");
+      detailed_screen        = prm.get_bool("Detailed screen");
       condition_number_limit = prm.get_integer("Condition number up to dofs");
     }
     prm.leave_subsection();

@@ -13,6 +13,16 @@ namespace xcrack
 
 
   template <int dim>
+  const Simulator<dim> &
+  SimulatorAccess<dim>::get_simulator() const
+  {
+    Assert(simulator, ExcMessage("initialize_simulator() was not called."));
+    return *simulator;
+  }
+
+
+
+  template <int dim>
   MPI_Comm
   SimulatorAccess<dim>::get_mpi_communicator() const
   {
@@ -107,6 +117,42 @@ namespace xcrack
   SimulatorAccess<dim>::get_enrichment() const
   {
     return simulator->enrichment.get();
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  SimulatorAccess<dim>::get_step() const
+  {
+    return simulator->step;
+  }
+
+
+
+  template <int dim>
+  double
+  SimulatorAccess<dim>::get_cycles() const
+  {
+    return simulator->cycles;
+  }
+
+
+
+  template <int dim>
+  const std::vector<FrontValues<dim>> &
+  SimulatorAccess<dim>::get_front_values() const
+  {
+    return simulator->front_values;
+  }
+
+
+
+  template <int dim>
+  const std::vector<FrontMove<dim>> &
+  SimulatorAccess<dim>::get_front_moves() const
+  {
+    return simulator->front_moves;
   }
 
 

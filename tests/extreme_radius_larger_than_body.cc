@@ -34,7 +34,7 @@ run(const double radius, std::unique_ptr<xcrack::Simulator<2>> &p)
     "include " SOURCE_DIR "/../prm/benchmarks/exact_mode_I_2d.prm\n"
     "set Output directory = results\n"
     "subsection Output\n set Timing summary = false\nend\n"
-    "subsection Mesh refinement\n set Number of cycles = 2\nend\n"
+    "subsection Mesh refinement\n set Number of meshes = 2\nend\n"
     "subsection Enrichment\n set Enrichment radius = " +
       std::to_string(radius) + "\nend\n");
   p = std::make_unique<xcrack::Simulator<2>>(prm, MPI_COMM_WORLD);
@@ -50,7 +50,7 @@ main(int argc, char **argv)
   const auto                           &all  = run(10, everywhere);
   const auto                           &part = run(0.25, zone);
   for (unsigned int r = 0; r < all.n_rows(); ++r)
-    logfile << "cycle " << r << ": " << all.get("cells", r)
+    logfile << "mesh " << r << ": " << all.get("cells", r)
             << " cells, every node enriched: energy error below 1e-4 "
             << yes(all.get("energy_error", r) < 1e-4)
             << ", L2 error below 1e-5 " << yes(all.get("L2_error", r) < 1e-5)

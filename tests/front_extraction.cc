@@ -63,11 +63,11 @@ check_penny()
   parallel::distributed::Triangulation<3> mesh(MPI_COMM_WORLD);
   GridGenerator::subdivided_hyper_cube(mesh, 8, -1, 1);
   double previous_distance = 0, previous_length = 0, previous_area = 0;
-  for (unsigned int cycle = 0; cycle < 3; ++cycle)
+  for (unsigned int level = 0; level < 3; ++level)
     {
-      if (cycle > 0)
+      if (level > 0)
         mesh.refine_global();
-      const double      h = 2. / (8 << cycle);
+      const double      h = 2. / (8 << level);
       LevelSetFields<3> level_sets(mesh);
       CrackSurface<3>   surface;
       level_sets.initialize(cracks.shapes());
@@ -111,7 +111,7 @@ check_penny()
       logfile << std::scientific << "  front length error " << length_error
               << ", lip area error " << area_error << std::defaultfloat
               << std::endl;
-      if (cycle > 0)
+      if (level > 0)
         logfile << std::fixed << std::setprecision(1)
                 << "  orders: point distance "
                 << std::log2(previous_distance / distance) << ", length "

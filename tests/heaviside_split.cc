@@ -30,7 +30,7 @@ struct Case
   std::string  name;
   unsigned int dim;
   unsigned int degree;
-  unsigned int cycles;
+  unsigned int meshes;
   double       tolerance;
 };
 
@@ -48,7 +48,7 @@ input(const Case &c, const bool with_crack)
     << "set Dimension = " << c.dim << "\nset Output directory = results\n"
     << "subsection Output\n set Write vtu = false\n set Timing summary = false\nend\n"
     << "subsection Discretization\n set Degree = " << c.degree << "\nend\n"
-    << "subsection Mesh refinement\n set Number of cycles = " << c.cycles
+    << "subsection Mesh refinement\n set Number of meshes = " << c.meshes
     << "\n set Strategy = region\n";
   if (c.dim == 2)
     in
@@ -103,7 +103,7 @@ check(const Case &c)
   std::unique_ptr<xcrack::Simulator<dim>> problem, plain_problem;
   const auto &stats = run<dim>(input(c, true), problem);
   for (unsigned int r = 0; r < stats.n_rows(); ++r)
-    logfile << c.name << ", cycle " << r << ": " << stats.get("cells", r)
+    logfile << c.name << ", mesh " << r << ": " << stats.get("cells", r)
             << " cells, " << stats.get("enriched_dofs", r)
             << " enriched dofs, rigid split reproduced (relative L2 error < "
             << c.tolerance
@@ -194,7 +194,7 @@ check_fitted_3d()
     << " set Timing summary = false\nend\n"
     << "subsection Mesh\n set Upper corner = 1, 1, 1\n"
     << " set Subdivisions = 4, 4, 4\nend\n"
-    << "subsection Mesh refinement\n set Number of cycles = 3\n"
+    << "subsection Mesh refinement\n set Number of meshes = 3\n"
     << " set Strategy = region\n subsection Region\n  set Region = 0.3 - x - abs(z - 0.5)\n end\nend\n"
     << "subsection Boundary conditions\n"
     << " set Dirichlet = 4: 0; 0; 0 | 5: 0.01; -0.02; 0.1\nend\n"
@@ -209,8 +209,8 @@ check_fitted_3d()
   const auto                           &stats = run<3>(in.str(), problem);
   for (unsigned int r = 0; r < stats.n_rows(); ++r)
     logfile << "3D Q1, crack tilted 1e-4 off a node plane, fit to vertex "
-            << "0.01, cycle " << r << ": " << stats.get("cells", r)
-            << " cells, " << stats.get("enriched_dofs", r)
+            << "0.01, mesh " << r << ": " << stats.get("cells", r) << " cells, "
+            << stats.get("enriched_dofs", r)
             << " enriched dofs, rigid split at the node plane reproduced "
             << "(relative L2 error < 1e-12): "
             << (stats.get("L2_error", r) < 1e-12 ? "yes" : "NO") << std::endl;

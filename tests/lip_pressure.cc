@@ -53,7 +53,7 @@ const double p_modulus = 0.7 / (1.3 * 0.4);
 
 template <int dim>
 void
-check_split(const unsigned int degree, const unsigned int cycles)
+check_split(const unsigned int degree, const unsigned int meshes)
 {
   const double       p = 0.5, c = 0.13;
   std::ostringstream in;
@@ -66,7 +66,7 @@ check_split(const unsigned int degree, const unsigned int cycles)
      << "subsection Output\n set Write vtu = false\n"
      << " set Timing summary = false\nend\n"
      << "subsection Discretization\n set Degree = " << degree << "\nend\n"
-     << "subsection Mesh refinement\n set Number of cycles = " << cycles
+     << "subsection Mesh refinement\n set Number of meshes = " << meshes
      << "\nend\n";
   if (dim == 2)
     in << "subsection Mesh\n set Subdivisions = 4, 4\n"
@@ -100,7 +100,7 @@ check_split(const unsigned int degree, const unsigned int cycles)
   const auto                             &stats   = run<dim>(in.str(), problem);
   const double                            opening = 2 * p / p_modulus;
   for (unsigned int r = 0; r < stats.n_rows(); ++r)
-    logfile << dim << "D Q" << degree << " split crack, cycle " << r << ": "
+    logfile << dim << "D Q" << degree << " split crack, mesh " << r << ": "
             << stats.get("cells", r)
             << " cells, uniaxial strain reproduced (relative L2 error < "
                "1e-7): "
@@ -122,7 +122,7 @@ check_superposition()
     in << "set Dimension = 2\nset Output directory = results\n"
        << "subsection Output\n set Write vtu = false\n"
        << " set Timing summary = false\nend\n"
-       << "subsection Mesh refinement\n set Number of cycles = 3\nend\n"
+       << "subsection Mesh refinement\n set Number of meshes = 3\nend\n"
        << "subsection Mesh\n set Subdivisions = 8, 8\n"
        << " set Lower corner = -1, -1\n set Upper corner = 1, 1\nend\n"
        << "subsection Enrichment\n set Tip enrichment = geometric\n"
@@ -151,7 +151,7 @@ check_superposition()
       const double difference = std::abs(pressure.get("max_opening", r) -
                                          remote.get("max_opening", r)) /
                                 remote.get("max_opening", r);
-      logfile << "Centre crack, cycle " << r << ": " << pressure.get("cells", r)
+      logfile << "Centre crack, mesh " << r << ": " << pressure.get("cells", r)
               << " cells, lip pressure and remote stress open it alike "
               << "(within 1 %): " << yes(difference < 1e-2)
               << ", closer than on the previous mesh: "

@@ -47,6 +47,11 @@ namespace xcrack
     double
     kappa(const unsigned int dim) const;
 
+    /// E' = E / (1 - nu^2) (plane strain, 3D) or E (plane stress): G =
+    /// (K_I^2 + K_II^2) / E'.
+    double
+    e_prime(const unsigned int dim) const;
+
     /// sigma = lambda tr(eps) I + 2 mu eps.
     template <int dim>
     SymmetricTensor<2, dim>
@@ -68,6 +73,8 @@ namespace xcrack
     double     youngs_modulus = 1.;
     double     poisson_ratio  = 0.3;
     PlaneModel plane_model    = PlaneModel::plane_strain;
+    /// K_Ic (0: not given), for the laws and criteria that need it.
+    double fracture_toughness = 0;
   };
 } // namespace xcrack
 

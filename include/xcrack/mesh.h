@@ -40,14 +40,15 @@ namespace xcrack
     parse_parameters(ParameterHandler &prm);
 
     /**
-     * Build the coarse mesh into @p triangulation and refine it globally.
+     * Build the coarse mesh into @p triangulation and (with @p refine)
+     * refine it globally.
      * Dimension-dependent errors (a corner with the wrong number of
      * coordinates, a generator that rejects its arguments, a file whose
      * cells are of another dimension) are thrown as InputError here.
      */
     template <int dim>
     void
-    create(Triangulation<dim> &triangulation) const;
+    create(Triangulation<dim> &triangulation, const bool refine = true) const;
 
     std::string  type = "box";
     std::string  lower_corner;

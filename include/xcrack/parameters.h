@@ -30,6 +30,8 @@ namespace xcrack
     FunctionConstants user_constants;
     bool              write_vtu      = true;
     bool              timing_summary = true;
+    /// The detail of every solve on screen also in a growth run.
+    bool detailed_screen = false;
     /// Largest problem whose condition number is computed (0: never).
     unsigned int condition_number_limit = 0;
   };

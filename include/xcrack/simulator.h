@@ -21,15 +21,21 @@
 #include <xcrack/crack/crack_surface.h>
 #include <xcrack/crack/level_set_fields.h>
 #include <xcrack/fracture/interaction_integral.h>
+#include <xcrack/front_move.h>
 #include <xcrack/linear_solver.h>
 #include <xcrack/material.h>
 #include <xcrack/mesh.h>
 #include <xcrack/mesh_refinement/interface.h>
 #include <xcrack/parameters.h>
+#include <xcrack/propagation.h>
 #include <xcrack/statistics.h>
+#include <xcrack/termination_criteria/interface.h>
 #include <xcrack/xfem/enrichment.h>
 
+#include <chrono>
+#include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -48,13 +54,20 @@ namespace xcrack
    *
    * The Simulator owns the state of a run (mesh, cracks as level-set
    * fields, finite element space, system, solution, fracture parameters,
-   * statistics) and the loop over solves; what can be exchanged is a
-   * plugin that reads this state through SimulatorAccess. Its member
-   * functions live in source/simulator/, one file per phase: parameters
-   * and the loop (core.cc), set-up of the space and constraints (setup.cc),
-   * assembly (assembly.cc), the solve (solve.cc), errors and the crack's
-   * report (postprocess.cc), stress intensity factors (fracture.cc) and
-   * output files (output.cc).
+   * the growth of the cracks, statistics) and the loop over solves; what
+   * can be exchanged is a plugin that reads this state through
+   * SimulatorAccess. Its member functions live in source/simulator/, one
+   * file per phase: parameters and the loop (core.cc), set-up of the space
+   * and constraints (setup.cc), assembly (assembly.cc), the solve
+   * (solve.cc), errors and the crack's report (postprocess.cc), stress
+   * intensity factors (fracture.cc), the growth of the cracks (growth.cc),
+   * mesh refinement (refinement.cc), output files (output.cc) and
+   * checkpoints (checkpoint.cc).
+   *
+   * Words: a *step* is one propagation step of the cracks (step 0 is the
+   * initial crack, which may be solved on several successively refined
+   * meshes, `Mesh refinement/Number of meshes`); *cycles* are load cycles
+   * N.
    *
    * Construction parses every subsection and builds the mesh; all input
    * errors surface there, as InputError, before run() writes anything.
@@ -67,10 +80,16 @@ namespace xcrack
     static void
     declare_parameters(ParameterHandler &prm);
 
-    Simulator(ParameterHandler &prm,
-              const MPI_Comm    mpi_communicator = MPI_COMM_WORLD);
+    /**
+     * Parse and check every input and build the mesh. With a non-empty
+     * @p resume_directory, run() continues the run checkpointed there
+     * instead of starting one (`xcrack --resume`).
+     */
+    Simulator(ParameterHandler  &prm,
+              const MPI_Comm     mpi_communicator = MPI_COMM_WORLD,
+              const std::string &resume_directory = "");
 
-    /// Solve on the sequence of meshes and write all results.
+    /// Solve on the sequence of meshes and steps and write all results.
     void
     run();
 
@@ -129,16 +148,59 @@ namespace xcrack
                      Vector<double> &cell_rhs) const;
     /// @}
 
-    /**
-     * Refine the mesh by the strategy plugin, capped at `Maximum level`
-     * (refinement.cc).
-     */
-    void
-    refine_mesh();
-
     /// Solve the system and distribute the constraints (solve.cc).
     unsigned int
     solve();
+
+    /**
+     * Set up, assemble and solve on the current mesh, start the statistics
+     * row of this solve (@p mesh of @p n_meshes of the current step) and
+     * report the crack and its K (core.cc).
+     */
+    void
+    solve_and_report(const unsigned int mesh, const unsigned int n_meshes);
+
+    /// The timings of the solve into its row, the output files under the
+    /// name @p key and statistics.csv (core.cc).
+    void
+    finish_solve(const std::string &key);
+
+    /// @name Growth (growth.cc)
+    /// @{
+    /**
+     * After the solve of a growth step: the moves of the front points, the
+     * cycles since the last step, the termination criteria, the advance of
+     * the next step; returns whether the run stops here.
+     */
+    bool
+    grow();
+
+    /// Move the cracks' fields by the moves, adapt the mesh to the new
+    /// fronts and write a checkpoint.
+    void
+    advance_cracks();
+
+    /// The fronts per crack, as compute_fracture_parameters() numbers them.
+    std::vector<unsigned int>
+    fronts_per_crack() const;
+    /// @}
+
+    /// @name Checkpoints (checkpoint.cc)
+    /// @{
+    /// Write the state of the run atomically (collective).
+    void
+    write_checkpoint();
+
+    /// Restore the state written by write_checkpoint() from the
+    /// checkpoint of @p directory.
+    void
+    read_checkpoint(const std::string &directory);
+
+    /// Replace the mesh and the cracks' fields by those of the checkpoint
+    /// directory @p checkpoint.
+    void
+    load_mesh(const std::string &checkpoint);
+    /// @}
 
     /// @name Postprocessing (postprocess.cc)
     /// @{
@@ -157,16 +219,40 @@ namespace xcrack
     /// @}
 
     /**
-     * K and G along the fronts (InteractionIntegral), cross-checked by the
-     * displacement jumps: printed, added to the statistics (and the error
-     * against `Reference K`), written to front_<cycle>.csv (fracture.cc).
+     * K and G along the fronts (InteractionIntegral) into front_values,
+     * cross-checked by the displacement jumps: printed, added to the
+     * statistics (and the error against `Reference K`) (fracture.cc).
      */
     void
-    compute_fracture_parameters(const unsigned int cycle);
+    compute_fracture_parameters();
+
+    /// front_<key>.csv: K, G and, in a growth run, the moves (fracture.cc).
+    void
+    write_front_file(const std::string &key) const;
 
     /// VTU files of the solution and of the cracks (output.cc).
     void
-    output_results(const unsigned int cycle);
+    output_results(const std::string &key);
+
+    /**
+     * Refine the mesh by the strategy plugin, capped at `Maximum level`,
+     * the cracks' fields carried across (refinement.cc).
+     */
+    void
+    refine_mesh();
+
+    /**
+     * After the cracks moved: refine (and coarsen) with the strategy until
+     * it marks nothing (a strategy that follows the fronts) or once
+     * (refinement.cc).
+     */
+    void
+    adapt_mesh_to_fronts();
+
+    /// Execute the marked refinement and coarsening, capped at the levels
+    /// of the parameters, carrying the fields; false if nothing was marked.
+    bool
+    execute_refinement();
 
     MPI_Comm           mpi_communicator;
     ConditionalOStream pcout;
@@ -174,17 +260,20 @@ namespace xcrack
     /// out of the constructor would print a warning.
     std::unique_ptr<TimerOutput> timer;
 
-    ParameterHandler                               &prm;
-    RunParameters                                   run_parameters;
-    FunctionConstants                               function_constants;
-    Material                                        material;
-    MeshDescription                                 mesh_description;
-    BoundaryConditions<dim>                         boundary_conditions;
-    LinearSolver                                    linear_solver;
-    unsigned int                                    degree = 1;
-    std::shared_ptr<Function<dim>>                  exact_solution;
-    CrackSet<dim>                                   cracks;
-    FractureParameters                              fracture_parameters;
+    ParameterHandler              &prm;
+    RunParameters                  run_parameters;
+    FunctionConstants              function_constants;
+    Material                       material;
+    MeshDescription                mesh_description;
+    BoundaryConditions<dim>        boundary_conditions;
+    LinearSolver                   linear_solver;
+    unsigned int                   degree = 1;
+    std::shared_ptr<Function<dim>> exact_solution;
+    CrackSet<dim>                  cracks;
+    FractureParameters             fracture_parameters;
+    Propagation<dim>               propagation;
+    std::vector<std::unique_ptr<TerminationCriteria::Interface<dim>>>
+                                                    termination_criteria;
     MeshRefinement::Parameters                      refinement_parameters;
     std::unique_ptr<MeshRefinement::Interface<dim>> mesh_refinement;
     /// The X-FEM enrichment, when there is a crack. Declared before the
@@ -212,8 +301,35 @@ namespace xcrack
     /// The enriched DoFs (owned and ghost) of the current space.
     IndexSet enriched_dofs;
 
-    Statistics                                  statistics;
-    std::vector<std::pair<double, std::string>> pvd_records;
+    /// @name The state of a growth run (checkpointed)
+    /// @{
+    /// The propagation step and the load cycles of the current solve.
+    unsigned int step   = 0;
+    double       cycles = 0;
+    /// Whether the cracks left their initial shapes: until then each new
+    /// mesh interpolates the shapes, afterwards the fields are carried.
+    bool cracks_moved = false;
+    /// The fastest move of the previous step (for the cycle integration).
+    std::optional<FrontMove<dim>> previous_fastest;
+    Statistics                    statistics;
+    /// (step, file) of solution-<key>.pvtu and crack-<key>.vtu.
+    std::vector<std::pair<double, std::string>> pvd_records, crack_records;
+    /// @}
+
+    /// K at the points of every front (fronts numbered crack after crack)
+    /// and, in a growth run, their moves: the state of the current step.
+    std::vector<FrontValues<dim>> front_values;
+    std::vector<FrontMove<dim>>   front_moves;
+
+    /// The checkpoint to continue from (empty: a new run).
+    std::string resume_directory;
+    /// Whether the screen shows the detail of each solve (the crack, K per
+    /// tip or front) or one line per step.
+    bool detailed_screen = true;
+    /// Wall time of each phase up to the last row (for the per-row times).
+    std::map<std::string, double> previous_times;
+    /// When run() started (for the estimate of the remaining time).
+    std::chrono::steady_clock::time_point start_time;
   };
 } // namespace xcrack
 

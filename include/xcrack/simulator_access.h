@@ -29,6 +29,10 @@ namespace xcrack
   class CrackSet;
   template <int dim>
   class Enrichment;
+  template <int dim>
+  struct FrontValues;
+  template <int dim>
+  struct FrontMove;
   class Material;
 
   /**
@@ -50,6 +54,10 @@ namespace xcrack
     initialize_simulator(const Simulator<dim> &simulator);
 
   protected:
+    /// The simulator itself (to create nested plugins with).
+    const Simulator<dim> &
+    get_simulator() const;
+
     MPI_Comm
     get_mpi_communicator() const;
 
@@ -89,6 +97,24 @@ namespace xcrack
     /// The enrichment (null without a crack).
     const Enrichment<dim> *
     get_enrichment() const;
+
+    /// The propagation step of the current solve (0: the initial crack).
+    unsigned int
+    get_step() const;
+
+    /// The load cycles N at the current step.
+    double
+    get_cycles() const;
+
+    /// K and G at the points of every front (fronts numbered crack after
+    /// crack) of the current solve.
+    const std::vector<FrontValues<dim>> &
+    get_front_values() const;
+
+    /// The moves of those points computed for the next advance (empty
+    /// before or without growth).
+    const std::vector<FrontMove<dim>> &
+    get_front_moves() const;
 
   private:
     const Simulator<dim> *simulator = nullptr;

@@ -37,11 +37,26 @@ namespace xcrack
     void
     write_csv(const std::string &filename) const;
 
+    /// Write or read with a boost archive (checkpoints).
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &columns &rows;
+    }
+
   private:
     struct Cell
     {
-      double value;
-      bool   is_integer;
+      double value      = 0;
+      bool   is_integer = false;
+
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int)
+      {
+        archive &value &is_integer;
+      }
     };
     std::vector<std::string>                 columns;
     std::vector<std::map<std::string, Cell>> rows;

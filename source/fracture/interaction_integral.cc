@@ -27,7 +27,7 @@ namespace xcrack
                         Patterns::Bool(),
                         "Extract K_I, K_II (, K_III) and G at the crack "
                         "tips or along the fronts after each solve and "
-                        "write front_<cycle>.csv.");
+                        "write front_<step>.csv.");
       prm.declare_entry("Crown radii",
                         "2, 4",
                         Patterns::Anything(),

@@ -12,20 +12,29 @@ namespace xcrack
       using List = Plugins::PluginList<Interface<3>>;
       prm.enter_subsection("Mesh refinement");
       {
-        prm.declare_entry("Number of cycles",
-                          "1",
-                          Patterns::Integer(1, 50),
-                          "Number of solves; the mesh is refined between two "
-                          "of them.");
-        prm.declare_entry("Strategy",
-                          "global",
-                          Patterns::Selection(List::pattern()),
-                          "How the mesh is refined between cycles:" +
-                            List::documentation());
+        prm.declare_entry(
+          "Number of meshes",
+          "1",
+          Patterns::Integer(1, 50),
+          "The initial crack (step 0) is solved on this many meshes, each "
+          "refined from the previous one by the Strategy: a convergence "
+          "study, or a mesh fitted to the front before the cracks grow.");
+        prm.declare_entry(
+          "Strategy",
+          "global",
+          Patterns::Selection(List::pattern()),
+          "How the mesh is refined between the meshes of step 0, and after "
+          "each propagation step:" +
+            List::documentation());
         prm.declare_entry("Maximum level",
                           "12",
                           Patterns::Integer(0, 30),
                           "Cells at this refinement level are not refined "
+                          "further.");
+        prm.declare_entry("Minimum level",
+                          "0",
+                          Patterns::Integer(0, 30),
+                          "Cells at this refinement level are not coarsened "
                           "further.");
         List::declare_parameters(prm);
       }
@@ -39,9 +48,10 @@ namespace xcrack
     {
       prm.enter_subsection("Mesh refinement");
       {
-        n_cycles  = prm.get_integer("Number of cycles");
+        n_meshes  = prm.get_integer("Number of meshes");
         strategy  = prm.get("Strategy");
         max_level = prm.get_integer("Maximum level");
+        min_level = prm.get_integer("Minimum level");
       }
       prm.leave_subsection();
     }

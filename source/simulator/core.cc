@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <iomanip>
+#include <sstream>
 
 namespace xcrack
 {
@@ -29,13 +30,16 @@ namespace xcrack
     EnrichmentParameters::declare_parameters(prm);
     FractureParameters::declare_parameters(prm);
     MeshRefinement::Parameters::declare_parameters(prm);
+    Propagation<dim>::declare_parameters(prm);
+    TerminationCriteria::declare_parameters(prm);
   }
 
 
 
   template <int dim>
-  Simulator<dim>::Simulator(ParameterHandler &prm,
-                            const MPI_Comm    mpi_communicator)
+  Simulator<dim>::Simulator(ParameterHandler  &prm,
+                            const MPI_Comm     mpi_communicator,
+                            const std::string &resume_directory)
     : mpi_communicator(mpi_communicator)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , prm(prm)
@@ -47,6 +51,7 @@ namespace xcrack
     , triangulation(mpi_communicator,
                     Triangulation<dim>::limit_level_difference_at_vertices)
     , level_sets(triangulation)
+    , resume_directory(resume_directory)
   {
     run_parameters.parse_parameters(prm);
     check_input(run_parameters.dimension == dim,
@@ -83,8 +88,24 @@ namespace xcrack
     degree = prm.get_integer("Degree");
     prm.leave_subsection();
 
+    // The growth model and what ends it (their plugins read the material).
+    propagation.initialize_simulator(*this);
+    propagation.parse_parameters(prm);
+    if (propagation.enabled())
+      {
+        check_input(cracks.size() > 0,
+                    "Propagation/Number of steps > 0 but there is no crack "
+                    "to grow (Cracks/Number of cracks = 0).");
+        check_input(fracture_parameters.compute,
+                    "Propagation/Number of steps > 0 needs the stress "
+                    "intensity factors: set Fracture parameters/Compute = "
+                    "true.");
+        termination_criteria = TerminationCriteria::create<dim>(prm, *this);
+      }
+    detailed_screen = !propagation.enabled() || run_parameters.detailed_screen;
 
-    mesh_description.create(triangulation);
+    // A resumed run loads its refined mesh onto the coarse one.
+    mesh_description.create(triangulation, resume_directory.empty());
     boundary_conditions.check_against(triangulation);
     cracks.check_against(triangulation);
     check_input(!boundary_conditions.dirichlet.empty() ||
@@ -155,10 +176,11 @@ namespace xcrack
   {
     // All input was checked in the constructor: from here on results are
     // written.
-    timer = std::make_unique<TimerOutput>(mpi_communicator,
+    timer      = std::make_unique<TimerOutput>(mpi_communicator,
                                           pcout,
                                           TimerOutput::never,
                                           TimerOutput::wall_times);
+    start_time = std::chrono::steady_clock::now();
     std::filesystem::create_directories(run_parameters.output_directory);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       prm.print_parameters(run_parameters.output_directory + "/parameters.prm",
@@ -188,99 +210,148 @@ namespace xcrack
           pcout << " only (no branch functions)";
         pcout << std::endl;
       }
+    if (propagation.enabled())
+      pcout << "Propagation: at most " << propagation.n_steps()
+            << " steps, the fastest point advancing "
+            << propagation.maximum_advance() << " per step" << std::endl;
 
-    std::map<std::string, double> previous_times;
-    for (unsigned int cycle = 0; cycle < refinement_parameters.n_cycles;
-         ++cycle)
+    if (!resume_directory.empty())
       {
-        if (cycle > 0)
-          {
-            TimerOutput::Scope t(*timer, "refine");
-            refine_mesh();
-          }
-        // The level-set fields give the crack as the mesh sees it (lips and
-        // front, written and reported below); the enrichment still reads the
-        // analytic geometry, which the fields interpolate (after the shifts
-        // of fit to vertex: setup_system() updates them). Propagation will
-        // update the fields every step.
-        setup_system();
-        assemble_system();
-        const unsigned int iterations = solve();
-
-        statistics.start_row();
-        statistics.add_value("step", (unsigned long long)cycle);
-        statistics.add_value("cycles", 0ull);
-        statistics.add_value(
-          "cells", (unsigned long long)triangulation.n_global_active_cells());
-        statistics.add_value("dofs", (unsigned long long)dof_handler.n_dofs());
-        statistics.add_value("enriched_dofs",
-                             (unsigned long long)n_free_enriched_dofs());
-        statistics.add_value("solver_iterations",
-                             (unsigned long long)iterations);
-        if (dof_handler.n_dofs() <= run_parameters.condition_number_limit)
-          statistics.add_value("condition_number",
-                               condition_number(system_matrix, constraints));
-
-        pcout << "Cycle " << cycle << ": "
-              << triangulation.n_global_active_cells() << " cells, "
-              << dof_handler.n_dofs() << " dofs";
-        if (linear_solver.type != "direct")
-          pcout << ", " << iterations << " CG iterations";
-        // The largest displacement component: a first sanity check of any
-        // run (and what the demo compares with beam theory).
-        const double max_displacement = compute_max_displacement();
-        statistics.add_value("max_displacement", max_displacement);
-        pcout << std::scientific << std::setprecision(4) << ", max |u_i| "
-              << max_displacement << std::defaultfloat;
-        if (exact_solution)
-          {
-            const auto [l2, energy] = compute_errors();
-            statistics.add_value("L2_error", l2);
-            statistics.add_value("energy_error", energy);
-            pcout << std::scientific << std::setprecision(3) << ", L2 error "
-                  << l2 << ", energy error " << energy << std::defaultfloat;
-          }
-        pcout << std::endl;
-        if (enrichment && enrichment->get_parameters().gather)
-          {
-            const auto n_masters = enrichment->gathering_masters().n_elements();
-            pcout << "  gathering: " << n_masters / (4 * dim) << " masters, "
-                  << n_masters << " branch unknowns" << std::endl;
-          }
-        if (enrichment)
-          report_crack_surface();
-        if (enrichment && fracture_parameters.compute)
-          compute_fracture_parameters(cycle);
-
-        if (run_parameters.write_vtu)
-          output_results(cycle);
-
-        // Wall time of each phase in this cycle: the timer accumulates over
-        // the run, so take differences.
-        const auto times =
-          timer->get_summary_data(TimerOutput::OutputData::total_wall_time);
-        for (const std::string phase : {"setup",
-                                        "assemble",
-                                        "solve",
-                                        "errors",
-                                        "fracture",
-                                        "output",
-                                        "refine"})
-          {
-            const double total = (times.count(phase) ? times.at(phase) : 0.);
-            statistics.add_value("t_" + phase, total - previous_times[phase]);
-            previous_times[phase] = total;
-          }
-        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-          statistics.write_csv(run_parameters.output_directory +
-                               "/statistics.csv");
+        read_checkpoint(resume_directory);
+        pcout << "Resumed at step " << step << " (" << cycles
+              << " cycles) from " << resume_directory << std::endl;
       }
 
-    if (exact_solution && statistics.n_rows() > 1)
+    for (bool stop = false; !stop;)
+      {
+        // Step 0 may be solved on several successively refined meshes (a
+        // convergence study of the initial crack); every step after it
+        // on the mesh its fronts adapted.
+        const unsigned int n_meshes =
+          (step == 0 ? refinement_parameters.n_meshes : 1);
+        for (unsigned int mesh = 0; mesh < n_meshes; ++mesh)
+          {
+            if (mesh > 0)
+              {
+                TimerOutput::Scope t(*timer, "refine");
+                refine_mesh();
+              }
+            solve_and_report(mesh, n_meshes);
+            // The last mesh of a growth step first computes the moves (its
+            // front file shows them).
+            if (propagation.enabled() && mesh + 1 == n_meshes)
+              stop = grow();
+            finish_solve(
+              Utilities::int_to_string(step, 3) +
+              (n_meshes > 1 ? "." + Utilities::int_to_string(mesh, 2) : ""));
+          }
+        if (!propagation.enabled() || stop)
+          break;
+        advance_cracks();
+        ++step;
+      }
+
+    if (exact_solution && statistics.n_rows() > 1 && !propagation.enabled())
       print_convergence_table();
     if (run_parameters.timing_summary)
       timer->print_summary();
   }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::solve_and_report(const unsigned int mesh,
+                                   const unsigned int n_meshes)
+  {
+    setup_system();
+    assemble_system();
+    const unsigned int iterations = solve();
+
+    statistics.start_row();
+    statistics.add_value("step", (unsigned long long)step);
+    statistics.add_value("mesh", (unsigned long long)mesh);
+    statistics.add_value("cycles", cycles);
+    statistics.add_value(
+      "cells", (unsigned long long)triangulation.n_global_active_cells());
+    statistics.add_value("dofs", (unsigned long long)dof_handler.n_dofs());
+    statistics.add_value("enriched_dofs",
+                         (unsigned long long)n_free_enriched_dofs());
+    statistics.add_value("solver_iterations", (unsigned long long)iterations);
+    if (dof_handler.n_dofs() <= run_parameters.condition_number_limit)
+      statistics.add_value("condition_number",
+                           condition_number(system_matrix, constraints));
+
+    std::ostringstream line;
+    line << "Step " << step;
+    if (n_meshes > 1)
+      line << ", mesh " << mesh;
+    line << ": " << triangulation.n_global_active_cells() << " cells, "
+         << dof_handler.n_dofs() << " dofs";
+    if (linear_solver.type != "direct")
+      line << ", " << iterations << " CG iterations";
+    // The largest displacement component: a first sanity check of any run
+    // (and what the demo compares with beam theory).
+    const double max_displacement = compute_max_displacement();
+    statistics.add_value("max_displacement", max_displacement);
+    line << std::scientific << std::setprecision(4) << ", max |u_i| "
+         << max_displacement << std::defaultfloat;
+    // The exact solution is that of the initial crack.
+    if (exact_solution && !cracks_moved)
+      {
+        const auto [l2, energy] = compute_errors();
+        statistics.add_value("L2_error", l2);
+        statistics.add_value("energy_error", energy);
+        line << std::scientific << std::setprecision(3) << ", L2 error " << l2
+             << ", energy error " << energy << std::defaultfloat;
+      }
+    if (detailed_screen)
+      pcout << line.str() << std::endl;
+    if (detailed_screen && enrichment && enrichment->get_parameters().gather)
+      {
+        const auto n_masters = enrichment->gathering_masters().n_elements();
+        pcout << "  gathering: " << n_masters / (4 * dim) << " masters, "
+              << n_masters << " branch unknowns" << std::endl;
+      }
+    if (enrichment)
+      report_crack_surface();
+    front_values.clear();
+    front_moves.clear();
+    if (enrichment && fracture_parameters.compute)
+      compute_fracture_parameters();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::finish_solve(const std::string &key)
+  {
+    if (enrichment && fracture_parameters.compute &&
+        Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      write_front_file(key);
+    if (run_parameters.write_vtu)
+      output_results(key);
+
+    // Wall time of each phase in this row: the timer accumulates over the
+    // run, so take differences.
+    const auto times =
+      timer->get_summary_data(TimerOutput::OutputData::total_wall_time);
+    std::vector<std::string> phases = {
+      "setup", "assemble", "solve", "errors", "fracture", "output", "refine"};
+    if (propagation.enabled())
+      for (const std::string phase : {"levelset", "checkpoint"})
+        phases.push_back(phase);
+    for (const std::string &phase : phases)
+      {
+        const double total = (times.count(phase) ? times.at(phase) : 0.);
+        statistics.add_value("t_" + phase, total - previous_times[phase]);
+        previous_times[phase] = total;
+      }
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      statistics.write_csv(run_parameters.output_directory + "/statistics.csv");
+  }
+
 
 
   template class Simulator<2>;

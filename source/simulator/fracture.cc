@@ -12,7 +12,7 @@ namespace xcrack
 {
   template <int dim>
   void
-  Simulator<dim>::compute_fracture_parameters(const unsigned int cycle)
+  Simulator<dim>::compute_fracture_parameters()
   {
     TimerOutput::Scope t(*timer, "fracture");
     // The fronts of all cracks, numbered one after the other.
@@ -44,19 +44,22 @@ namespace xcrack
       normals         = rule.get_normal_vectors();
     };
     const InteractionIntegral<dim> integral(fracture_parameters, material);
-    const auto                     values = integral.compute(dof_handler,
-                                         solution,
-                                         fronts,
-                                         fe_values_of,
-                                         boundary_conditions.lip_pressure.get(),
-                                         lips_of,
-                                         boundary_conditions.body_force.get());
+    front_values = integral.compute(dof_handler,
+                                    solution,
+                                    fronts,
+                                    fe_values_of,
+                                    boundary_conditions.lip_pressure.get(),
+                                    lips_of,
+                                    boundary_conditions.body_force.get());
 
     // The cross-check by the displacement jumps over the crown.
-    std::vector<std::array<double, 3>> jump_k;
-    for (const auto &v : values)
-      jump_k.push_back(displacement_jump_k(
-        dof_handler, solution, v.point, material, v.r_inf, v.r_sup));
+    for (auto &v : front_values)
+      v.k_jump = displacement_jump_k(
+        dof_handler, solution, v.point, material, v.r_inf, v.r_sup);
+    const auto &values = front_values;
+    // In a growth run the screen shows one line per step; the values are
+    // in front_<step>.csv.
+    ConditionalOStream out(std::cout, pcout.is_active() && detailed_screen);
 
     // The reference K at each point, if given.
     std::vector<Vector<double>> reference(values.size());
@@ -80,13 +83,13 @@ namespace xcrack
 
     const auto warn_crown = [&](const FrontValues<dim> &v) {
       if (!v.crown_clear)
-        pcout << "  Warning: the crown of " << (dim == 2 ? "tip " : "front ")
-              << v.front + 1 << " (r_sup = " << v.r_sup
-              << ") reaches the boundary or another "
-              << (dim == 2 ? "tip" : "front")
-              << "; its K and G are unreliable. Use smaller Fracture "
-                 "parameters/Crown radii or a finer mesh there."
-              << std::endl;
+        out << "  Warning: the crown of " << (dim == 2 ? "tip " : "front ")
+            << v.front + 1 << " (r_sup = " << v.r_sup
+            << ") reaches the boundary or another "
+            << (dim == 2 ? "tip" : "front")
+            << "; its K and G are unreliable. Use smaller Fracture "
+               "parameters/Crown radii or a finer mesh there."
+            << std::endl;
     };
 
     // On screen, K's are rounded to 1e-6 of the largest one: a K that
@@ -101,20 +104,20 @@ namespace xcrack
           const auto rounded = [&](const double k) {
             return std::round(k / quantum) * quantum + 0.;
           };
-          pcout << "  tip " << i + 1 << std::scientific << std::setprecision(6)
-                << ": K_I = " << rounded(v.k_I)
-                << ", K_II = " << rounded(v.k_II) << ", G = " << v.g
-                << ", G_Irwin = " << v.g_irwin << std::endl
-                << "    displacement jumps: K_I = " << rounded(jump_k[i][0])
-                << ", K_II = " << rounded(jump_k[i][1]) << std::defaultfloat
-                << std::endl;
+          out << "  tip " << i + 1 << std::scientific << std::setprecision(6)
+              << ": K_I = " << rounded(v.k_I) << ", K_II = " << rounded(v.k_II)
+              << ", G = " << v.g << ", G_Irwin = " << v.g_irwin << std::endl
+              << "    displacement jumps: K_I = "
+              << rounded(values[i].k_jump[0])
+              << ", K_II = " << rounded(values[i].k_jump[1])
+              << std::defaultfloat << std::endl;
           warn_crown(v);
           const std::string suffix = "_" + std::to_string(i + 1);
           statistics.add_value("K_I" + suffix, v.k_I);
           statistics.add_value("K_II" + suffix, v.k_II);
           statistics.add_value("G" + suffix, v.g);
-          statistics.add_value("K_I_jump" + suffix, jump_k[i][0]);
-          statistics.add_value("K_II_jump" + suffix, jump_k[i][1]);
+          statistics.add_value("K_I_jump" + suffix, values[i].k_jump[0]);
+          statistics.add_value("K_II_jump" + suffix, values[i].k_jump[1]);
         }
     else
       // Per front: the range and mean of each K over its nodes, and the
@@ -147,23 +150,23 @@ namespace xcrack
           for (const auto &v : values)
             if (v.front == f)
               basis = v.basis;
-          pcout << "  front " << f + 1 << ": " << n << " points (" << basis
-                << "), " << std::scientific << std::setprecision(6);
+          out << "  front " << f + 1 << ": " << n << " points (" << basis
+              << "), " << std::scientific << std::setprecision(6);
           for (unsigned int m = 0; m < 3; ++m)
             {
               k_mean[m] /= n;
-              pcout << (m > 0 ? "; " : "") << mode_names[m] << " in ["
-                    << rounded(k_min[m]) << ", " << rounded(k_max[m]) << "]";
+              out << (m > 0 ? "; " : "") << mode_names[m] << " in ["
+                  << rounded(k_min[m]) << ", " << rounded(k_max[m]) << "]";
               const std::string suffix = "_" + std::to_string(f + 1);
               statistics.add_value(std::string(mode_names[m]) + "_min" + suffix,
                                    k_min[m]);
               statistics.add_value(std::string(mode_names[m]) + "_max" + suffix,
                                    k_max[m]);
             }
-          pcout << std::endl
-                << "    |G - G_Irwin| / max G = " << std::setprecision(2)
-                << std::round(irwin_gap / g_max * 1e4) * 1e-4
-                << std::defaultfloat << std::endl;
+          out << std::endl
+              << "    |G - G_Irwin| / max G = " << std::setprecision(2)
+              << std::round(irwin_gap / g_max * 1e4) * 1e-4 << std::defaultfloat
+              << std::endl;
           for (const auto &v : values)
             if (v.front == f && !v.crown_clear)
               {
@@ -201,35 +204,52 @@ namespace xcrack
             statistics.add_value(std::string(mode_names[m]) + "_error",
                                  error[m]);
           }
-        pcout << "  K errors against the reference (max over the "
-              << (dim == 2 ? "tips" : "front")
-              << ", to 1e-6): " << std::scientific << std::setprecision(3);
+        out << "  K errors against the reference (max over the "
+            << (dim == 2 ? "tips" : "front")
+            << ", to 1e-6): " << std::scientific << std::setprecision(3);
         for (unsigned int m = 0; m < n_modes; ++m)
-          pcout << (m > 0 ? ", " : "") << mode_names[m] << " "
-                << std::round(error[m] * 1e6) * 1e-6;
-        pcout << std::defaultfloat << std::endl;
-      }
-
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      {
-        std::ofstream csv(run_parameters.output_directory + "/front_" +
-                          Utilities::int_to_string(cycle, 3) + ".csv");
-        csv << "index,s,x,y,z,K_I,K_II,K_III,G,G_Irwin,r_inf,r_sup,"
-               "K_I_jump,K_II_jump,K_III_jump,front\n"
-            << std::setprecision(10);
-        for (unsigned int i = 0; i < values.size(); ++i)
-          {
-            const auto &v = values[i];
-            csv << i << ',' << v.point.s << ',' << v.point.position[0] << ','
-                << v.point.position[1] << ','
-                << (dim == 3 ? v.point.position[dim - 1] : 0.) << ',' << v.k_I
-                << ',' << v.k_II << ',' << v.k_III << ',' << v.g << ','
-                << v.g_irwin << ',' << v.r_inf << ',' << v.r_sup << ','
-                << jump_k[i][0] << ',' << jump_k[i][1] << ',' << jump_k[i][2]
-                << ',' << v.front + 1 << '\n';
-          }
+          out << (m > 0 ? ", " : "") << mode_names[m] << " "
+              << std::round(error[m] * 1e6) * 1e-6;
+        out << std::defaultfloat << std::endl;
       }
   }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_front_file(const std::string &key) const
+  {
+    std::ofstream csv(run_parameters.output_directory + "/front_" + key +
+                      ".csv");
+    csv << "index,s,x,y,z,K_I,K_II,K_III,G,G_Irwin,r_inf,r_sup,"
+           "K_I_jump,K_II_jump,K_III_jump,front";
+    // The moves of a growth step: equivalent K, its range, the rate, the
+    // kink angle (radians) and the advance to the next step.
+    const bool moves =
+      (front_moves.size() == front_values.size() && !front_moves.empty());
+    if (moves)
+      csv << ",K_eq,delta_K,rate,angle,advance";
+    csv << '\n' << std::setprecision(10);
+    for (unsigned int i = 0; i < front_values.size(); ++i)
+      {
+        const auto &v = front_values[i];
+        csv << i << ',' << v.point.s << ',' << v.point.position[0] << ','
+            << v.point.position[1] << ','
+            << (dim == 3 ? v.point.position[dim - 1] : 0.) << ',' << v.k_I
+            << ',' << v.k_II << ',' << v.k_III << ',' << v.g << ',' << v.g_irwin
+            << ',' << v.r_inf << ',' << v.r_sup << ',' << v.k_jump[0] << ','
+            << v.k_jump[1] << ',' << v.k_jump[2] << ',' << v.front + 1;
+        if (moves)
+          {
+            const auto &m = front_moves[i];
+            csv << ',' << m.k_eq << ',' << m.delta_k << ',' << m.rate << ','
+                << m.angle << ',' << m.advance;
+          }
+        csv << '\n';
+      }
+  }
+
 
 
   template class Simulator<2>;

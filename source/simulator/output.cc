@@ -9,7 +9,7 @@ namespace xcrack
 {
   template <int dim>
   void
-  Simulator<dim>::output_results(const unsigned int cycle)
+  Simulator<dim>::output_results(const std::string &key)
   {
     TimerOutput::Scope t(*timer, "output");
 
@@ -58,18 +58,26 @@ namespace xcrack
                                  "lst" + suffix);
       }
     data_out.build_patches(degree);
-    // crack-<cycle>.vtu for one crack, crack<i>-<cycle>.vtu for several.
+    // crack-<key>.vtu for one crack, crack<i>-<key>.vtu for several, and
+    // crack.pvd, the series of the first crack (ParaView shows it grow).
+    const std::string dir = run_parameters.output_directory + "/";
     if (enrichment)
       for (unsigned int c = 0; c < crack_surfaces.size(); ++c)
-        crack_surfaces[c].write_vtu(
-          run_parameters.output_directory + "/crack" +
-            (cracks.size() > 1 ? std::to_string(c + 1) : "") + "-" +
-            Utilities::int_to_string(cycle, 3) + ".vtu",
-          dof_handler,
-          solution);
+        {
+          const std::string name =
+            "crack" +
+            (cracks.size() > 1 ? std::to_string(c + 1) : std::string()) + "-" +
+            key + ".vtu";
+          crack_surfaces[c].write_vtu(dir + name, dof_handler, solution);
+          if (c == 0 && Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+            {
+              crack_records.emplace_back(statistics.n_rows() - 1, name);
+              std::ofstream pvd(dir + "crack.pvd");
+              DataOutBase::write_pvd_record(pvd, crack_records);
+            }
+        }
 
-    const std::string  dir  = run_parameters.output_directory + "/";
-    const std::string  base = "solution-" + Utilities::int_to_string(cycle, 3);
+    const std::string  base = "solution-" + key;
     const unsigned int rank =
       Utilities::MPI::this_mpi_process(mpi_communicator);
     const unsigned int n_ranks =
@@ -87,7 +95,9 @@ namespace xcrack
                            ".vtu");
         std::ofstream pvtu(dir + base + ".pvtu");
         data_out.write_pvtu_record(pvtu, pieces);
-        pvd_records.emplace_back(cycle, base + ".pvtu");
+        // The time of a record: the index of the solve (the row of
+        // statistics.csv), which increases over meshes and steps alike.
+        pvd_records.emplace_back(statistics.n_rows() - 1, base + ".pvtu");
         std::ofstream pvd(dir + "solution.pvd");
         DataOutBase::write_pvd_record(pvd, pvd_records);
       }

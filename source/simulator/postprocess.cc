@@ -159,9 +159,10 @@ namespace xcrack
           }
         line << std::scientific << std::setprecision(4) << ", largest opening "
              << opening;
-        pcout << line.str() << std::endl;
+        if (detailed_screen)
+          pcout << line.str() << std::endl;
       }
-    statistics.add_value("crack_measure", measure);
+    statistics.add_value("crack_size", measure);
     statistics.add_value("front_length", front_length);
     statistics.add_value("max_opening", largest_opening);
   }
@@ -175,7 +176,7 @@ namespace xcrack
     pcout << std::endl
           << "Convergence (rates against the mean cell size h = cells^(-1/"
           << dim << "))" << std::endl
-          << "cycle     cells      dofs   L2_error  rate  energy_error  rate"
+          << " mesh     cells      dofs   L2_error  rate  energy_error  rate"
           << std::endl;
     for (unsigned int r = 0; r < statistics.n_rows(); ++r)
       {

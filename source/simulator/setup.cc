@@ -15,10 +15,9 @@ namespace xcrack
   void
   Simulator<dim>::setup_system()
   {
-    // The cracks' fields on this mesh (interpolated from their shapes: the
-    // cracks do not move yet), the cells they enrich, and the fields
-    // fitted to the vertices the enrichment chose; gathering ties the
-    // branch DoFs along the fronts they give.
+    // The cracks' fields on this mesh, the cells they enrich, and the
+    // fields fitted to the vertices the enrichment chose; gathering ties
+    // the branch DoFs along the fronts they give.
     update_level_sets();
     {
       TimerOutput::Scope t(*timer, "setup");
@@ -82,6 +81,10 @@ namespace xcrack
   Simulator<dim>::update_level_sets()
   {
     if (cracks.size() == 0)
+      return;
+    // Until the cracks move they are their initial shapes, which a new mesh
+    // interpolates exactly; afterwards the fields were carried across.
+    if (cracks_moved)
       return;
     TimerOutput::Scope t(*timer, "levelset");
     level_sets.initialize(cracks.shapes());

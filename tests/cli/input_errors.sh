@@ -29,17 +29,17 @@ expect_error() {
 # An earlier run's results, which no failed start may touch.
 cp "$here/valid.prm" valid.prm
 "$xcrack" valid.prm > valid.log 2>&1 || { fail "valid run: exit status $?"; cat valid.log; }
-for f in out/statistics.csv out/solution.pvd out/solution-000.pvtu out/solution-001.pvtu out/parameters.prm; do
+for f in out/statistics.csv out/solution.pvd out/solution-000.00.pvtu out/solution-000.01.pvtu out/parameters.prm; do
   [ -s "$f" ] || fail "valid run did not write $f"
 done
-grep -q '^step,cycles,cells,dofs,' out/statistics.csv || fail "statistics.csv header"
+grep -q "^step,mesh,cycles,cells,dofs," out/statistics.csv || fail "statistics.csv header"
 [ "$(wc -l < out/statistics.csv)" -eq 3 ] || fail "statistics.csv should have a header and 2 rows"
 snapshot="$(cd out && ls -l --time-style=full-iso && md5sum ./*)"
 
 expect_error unknown_entry "Line <5> of file <unknown_entry.prm>: No entry with name <Subdivision>" \
   < <(sed 's/set Subdivisions = 2, 2/set Subdivision = 2, 2/' valid.prm)
-expect_error wrong_type "Line <12>.*two.*Number of cycles" \
-  < <(sed 's/set Number of cycles = 2/set Number of cycles = two/' valid.prm)
+expect_error wrong_type "Line <12>.*two.*Number of meshes" \
+  < <(sed 's/set Number of meshes = 2/set Number of meshes = two/' valid.prm)
 expect_error missing_mesh "Mesh/File name = missing.msh: cannot open" \
   < <(sed 's/set Subdivisions = 2, 2/set Type = file\n  set File name = missing.msh/' valid.prm)
 expect_error both_kinds_on_one_boundary "boundary id 0 has both a full displacement and a traction" \
@@ -61,11 +61,38 @@ two_cracks() {
 expect_error cracks_too_close "Cracks/Crack 1 and Crack 2: their enriched zones meet near" \
   < <(two_cracks "0.6, 0.45" "0.9, 0.45")
 
+# The growth model: a crack that grows (valid.prm plus these lines).
+growth() {
+  cat valid.prm
+  printf 'subsection Cracks\n  set Number of cracks = 1\n  subsection Crack 1\n'
+  printf '    set Start point = -1, 0.45\n    set End point = 0.4, 0.45\n    set Tips = end\n  end\nend\n'
+  printf 'subsection Propagation\n  set Number of steps = 3\n  set Maximum advance = %s\n' "${1:-0.1}"
+  printf '  set Load ratio = %s\n' "${2:-0}"
+  printf '  subsection Growth law\n    set Model name = %s\n' "${3:-paris}"
+  printf '    subsection Paris\n      set C = %s\n      set m = %s\n    end\n  end\nend\n' "${4:-1e-3}" "${5:-3}"
+}
+expect_error growth_no_advance "Propagation/Maximum advance = 0: must be positive" < <(growth 0)
+expect_error growth_ratio "Propagation/Load ratio = 1: must be below 1" < <(growth 0.1 1)
+expect_error growth_c "Propagation/Growth law/Paris/C = -1: must be positive" < <(growth 0.1 0 paris -1)
+expect_error growth_m "Propagation/Growth law/Paris/m = 0: must be positive" < <(growth 0.1 0 paris 1e-3 0)
+expect_error growth_forman "Model name = forman needs the fracture toughness: set Material/Fracture toughness" \
+  < <(growth 0.1 0 forman)
+expect_error growth_failure_check "'fracture toughness' needs Material/Fracture toughness" \
+  < <(growth; printf 'subsection Termination criteria\n  set Termination criteria = fracture toughness\nend\n')
+expect_error growth_no_crack "Propagation/Number of steps > 0 but there is no crack" \
+  < <(cat valid.prm; printf 'subsection Propagation\n  set Number of steps = 2\n  set Maximum advance = 0.1\nend\n')
+expect_error growth_coarsening "Mesh refinement/Front/Coarsening band = 3: must exceed twice the Front band" \
+  < <(cat valid.prm; printf 'subsection Mesh refinement\n  set Strategy = front\n  subsection Front\n    set Front band = 2\n    set Coarsening band = 3\n  end\nend\n')
+"$xcrack" --resume out > resume.log 2>&1
+[ $? -eq 1 ] && grep -q "no checkpoint there" resume.log ||
+  { fail "--resume of a directory without a checkpoint"; cat resume.log; }
+
 [ "$snapshot" = "$(cd out && ls -l --time-style=full-iso && md5sum ./*)" ] ||
   fail "a failed start changed the earlier results in out/"
 
 "$xcrack" --print-parameters > params.log 2>&1 || fail "--print-parameters: exit status $?"
-for entry in "Dimension" "Output directory" "Young's modulus" "Dirichlet components" "Number of cycles"; do
+for entry in "Dimension" "Output directory" "Young's modulus" "Dirichlet components" "Number of meshes" \
+  "Maximum advance" "Termination criteria"; do
   grep -q "set $entry" params.log || fail "--print-parameters does not list '$entry'"
 done
 

@@ -33,6 +33,14 @@ namespace xcrack
     Tensor<1, dim> e1;
     Tensor<1, dim> e2;
     Tensor<1, dim> e3;
+
+    /// Write or read with a boost archive (checkpoints).
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &position &s &e1 &e2 &e3;
+    }
   };
 
   /**

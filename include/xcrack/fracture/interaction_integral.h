@@ -13,6 +13,7 @@
 #include <xcrack/material.h>
 #include <xcrack/parsed_function.h>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -79,6 +80,9 @@ namespace xcrack
     double g_irwin = 0;
     /// The crown radii used.
     double r_inf = 0, r_sup = 0;
+    /// K_I, K_II, K_III from the displacement jumps over the crown (the
+    /// cross-check; filled by the Simulator).
+    std::array<double, 3> k_jump = {{0, 0, 0}};
     /**
      * Whether the crown stays clear of the body's boundary and of the other
      * tips: the domain form assumes q = 0 on the boundary and a single

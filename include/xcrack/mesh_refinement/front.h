@@ -10,9 +10,13 @@ namespace xcrack
   {
     /**
      * `front`: every cell whose centre lies within `Front band` of its own
-     * diameters of a crack front (`subsection Front`). The refined zone
-     * shrinks with the cells, so each refinement adds cells along the front
-     * only (a 3D front gets about twice as many, not eight times).
+     * diameters of a crack front is refined (`subsection Front`). The
+     * refined zone shrinks with the cells, so each refinement adds cells
+     * along the front only (a 3D front gets about twice as many, not eight
+     * times), and the mesh grades from the front outwards. With `Coarsening
+     * band` > 0 the cells farther than that many of their diameters from
+     * every front are coarsened: as the cracks grow, the fine cells follow
+     * the fronts and the number of cells stays bounded.
      */
     template <int dim>
     class Front : public Interface<dim>, public SimulatorAccess<dim>
@@ -28,8 +32,11 @@ namespace xcrack
       mark(parallel::distributed::Triangulation<dim> &triangulation)
         const override;
 
+      bool
+      follows_fronts() const override;
+
     private:
-      double band = 2;
+      double band = 2, coarsening_band = 0;
     };
   } // namespace MeshRefinement
 } // namespace xcrack

@@ -35,14 +35,26 @@ namespace xcrack
     public:
       virtual void
       mark(parallel::distributed::Triangulation<dim> &triangulation) const = 0;
+
+      /**
+       * Whether the strategy marks relative to the cracks' fronts and
+       * reaches a fixed point when repeated: after the cracks move, the
+       * Simulator then repeats it until the mesh no longer changes. Other
+       * strategies refine once per step.
+       */
+      virtual bool
+      follows_fronts() const
+      {
+        return false;
+      }
     };
 
 
 
     /**
-     * The entries every strategy shares: how many solves a run does on
-     * successively refined meshes, which strategy marks the cells, and the
-     * finest level allowed.
+     * The entries every strategy shares: on how many successively refined
+     * meshes the initial crack is solved (step 0), which strategy marks the
+     * cells, and the finest and coarsest levels allowed.
      */
     struct Parameters
     {
@@ -53,9 +65,10 @@ namespace xcrack
       void
       parse_parameters(ParameterHandler &prm);
 
-      unsigned int n_cycles  = 1;
+      unsigned int n_meshes  = 1;
       std::string  strategy  = "global";
       unsigned int max_level = 12;
+      unsigned int min_level = 0;
     };
 
 

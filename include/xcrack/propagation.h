@@ -1,0 +1,137 @@
+#ifndef xcrack_propagation_h
+#define xcrack_propagation_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <xcrack/direction_criterion/interface.h>
+#include <xcrack/fracture/interaction_integral.h>
+#include <xcrack/front_move.h>
+#include <xcrack/growth_law/interface.h>
+#include <xcrack/level_set_update/interface.h>
+#include <xcrack/simulator_access.h>
+
+#include <memory>
+#include <vector>
+
+namespace xcrack
+{
+  using namespace dealii;
+
+  /**
+   * The growth model of a fatigue run (`subsection Propagation`): from the
+   * stress intensity factors along the fronts of a step to the move of
+   * every front point, the load cycles that take, and the new level sets.
+   *
+   * Per point, with K_I taken as max(K_I, 0) (a closed crack does not
+   * open): the kink angle of the `Direction criterion`; the equivalent K
+   * at the maximum of the load cycle, sqrt(E' G) with Irwin's G from the
+   * extracted K's (`Equivalent K = energy release rate`, mode III included
+   * as the energy includes it; the interaction integral's K's are more
+   * accurate than the G-theta integral, which stays a cross-check) or the
+   * criterion's own (`criterion`, K_III added as K_III^2 / (1 - nu) to K_eq^2
+   * if `Mode III = added`, else ignored); the range Delta K = (1 - R) K_eq for
+   * the `Load ratio` R >= 0 (proportional loading: one solve at the maximum
+   * load gives the whole cycle; a compressive minimum, R < 0, closes the crack
+   * and counts as R = 0); the rate da/dN of the `Growth law`. The cycle
+   * increment is the one in which the fastest point of all fronts of all cracks
+   * advances `Maximum advance`; every other point advances in proportion to its
+   * rate.
+   *
+   * Mode III does not twist the front: the kink is a rotation about the
+   * front's tangent.
+   *
+   * The cycles between two steps are integrated along the path of the
+   * fastest point with K_eq^2 interpolated linearly in the advance between
+   * the two solves (5-point Gauss-Legendre): exact when K grows like the
+   * square root of the crack size (Griffith and penny cracks, BENCHMARKS.md
+   * Case 9), second order in the advance otherwise. The plain cycle jump
+   * Delta a / (da/dN) is first order.
+   */
+  template <int dim>
+  class Propagation : public SimulatorAccess<dim>
+  {
+  public:
+    enum class EquivalentK
+    {
+      energy_release_rate,
+      criterion
+    };
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Parse the entries and create the plugins (after
+    /// initialize_simulator()).
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Whether the run propagates the cracks (Number of steps > 0).
+    bool
+    enabled() const;
+
+    unsigned int
+    n_steps() const;
+
+    double
+    maximum_advance() const;
+
+    /// Whether the growth law counts load cycles (not quasi-static).
+    bool
+    counts_cycles() const;
+
+    /**
+     * The moves of the points of @p values (K at the points of every
+     * front of every crack, fronts numbered crack after crack as in
+     * @p fronts_per_crack), the fastest advancing @p largest_advance.
+     */
+    std::vector<FrontMove<dim>>
+    moves(const std::vector<FrontValues<dim>> &values,
+          const std::vector<unsigned int>     &fronts_per_crack,
+          const double                         largest_advance) const;
+
+    /// Scale the advances of @p moves so that the largest is @p largest.
+    static void
+    scale_advances(std::vector<FrontMove<dim>> &moves, const double largest);
+
+    /// The fastest of @p moves (largest rate), or null if none moves.
+    static const FrontMove<dim> *
+    fastest(const std::vector<FrontMove<dim>> &moves);
+
+    /**
+     * The load cycles in which @p before (the fastest move of the previous
+     * step) advanced, given @p now, the moves computed at the next step:
+     * along its path, from its K_eq then to the K_eq now at its new
+     * position (interpolated along the fronts of its crack).
+     */
+    double
+    cycles(const FrontMove<dim>              &before,
+           const std::vector<FrontMove<dim>> &now) const;
+
+    /// Move every crack's level sets in @p fields by @p moves.
+    void
+    update_level_sets(const std::vector<FrontMove<dim>> &moves,
+                      LevelSetFields<dim>               &fields) const;
+
+    /// The load factor K_Ic / max K_eq of a quasi-static step.
+    double
+    load_factor(const std::vector<FrontMove<dim>> &moves) const;
+
+  private:
+    /// K_eq at @p x on the fronts of crack @p crack (moves of a step).
+    double
+    k_eq_at(const Point<dim>                  &x,
+            const unsigned int                 crack,
+            const std::vector<FrontMove<dim>> &moves) const;
+
+    unsigned int steps        = 0;
+    double       advance      = 0;
+    double       load_ratio   = 0;
+    EquivalentK  equivalent_k = EquivalentK::energy_release_rate;
+    bool         add_mode_III = false;
+    std::unique_ptr<DirectionCriterion::Interface<dim>> direction_criterion;
+    std::unique_ptr<GrowthLaw::Interface<dim>>          growth_law;
+    std::unique_ptr<LevelSetUpdate::Interface<dim>>     level_set_update;
+  };
+} // namespace xcrack
+
+#endif

@@ -1,0 +1,33 @@
+#ifndef xcrack_termination_criteria_crack_leaves_body_h
+#define xcrack_termination_criteria_crack_leaves_body_h
+
+#include <xcrack/simulator_access.h>
+#include <xcrack/termination_criteria/interface.h>
+
+#include <vector>
+
+namespace xcrack
+{
+  namespace TerminationCriteria
+  {
+    /**
+     * `crack leaves body`: the run ends when a 2D tip would be moved out of
+     * the body by the next advance, or when a crack's fronts change in
+     * number (a tip or a piece of front reached the surface: the body is
+     * split or the crack has broken through a wall).
+     */
+    template <int dim>
+    class CrackLeavesBody : public Interface<dim>, public SimulatorAccess<dim>
+    {
+    public:
+      Verdict
+      check() override;
+
+    private:
+      /// The number of fronts of each crack at the first check.
+      std::vector<unsigned int> n_fronts;
+    };
+  } // namespace TerminationCriteria
+} // namespace xcrack
+
+#endif

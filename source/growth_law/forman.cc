@@ -1,0 +1,80 @@
+#include <xcrack/growth_law/forman.h>
+#include <xcrack/input_error.h>
+#include <xcrack/material.h>
+
+#include <cmath>
+#include <limits>
+
+namespace xcrack
+{
+  namespace GrowthLaw
+  {
+    template <int dim>
+    void
+    Forman<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Forman");
+      {
+        prm.declare_entry("C",
+                          "1e-9",
+                          Patterns::Double(),
+                          "Coefficient C (> 0), in length per cycle over "
+                          "(stress intensity)^(m - 1).");
+        prm.declare_entry("m", "3", Patterns::Double(), "Exponent m (> 0).");
+        prm.declare_entry("Threshold",
+                          "0",
+                          Patterns::Double(0),
+                          "Delta K_th: no growth at or below it.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    void
+    Forman<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      {
+        const Plugins::ScopedSubsection scope(prm, "Forman");
+        c         = prm.get_double("C");
+        m         = prm.get_double("m");
+        threshold = prm.get_double("Threshold");
+        check_input(c > 0,
+                    "Propagation/Growth law/Forman/C = " + prm.get("C") +
+                      ": must be positive.");
+        check_input(m > 0,
+                    "Propagation/Growth law/Forman/m = " + prm.get("m") +
+                      ": must be positive.");
+      }
+      toughness = this->get_material().fracture_toughness;
+      check_input(toughness > 0,
+                  "Propagation/Growth law/Model name = forman needs the "
+                  "fracture toughness: set Material/Fracture toughness "
+                  "(K_Ic > 0).");
+    }
+
+
+
+    template <int dim>
+    double
+    Forman<dim>::rate(const double delta_k,
+                      const double,
+                      const double load_ratio) const
+    {
+      if (delta_k <= threshold)
+        return 0.;
+      const double r           = std::max(load_ratio, 0.);
+      const double denominator = (1 - r) * toughness - delta_k;
+      return (denominator <= 0 ? std::numeric_limits<double>::infinity() :
+                                 c * std::pow(delta_k, m) / denominator);
+    }
+
+    XCRACK_REGISTER_PLUGIN(Interface,
+                           Forman,
+                           "forman",
+                           "da/dN = C Delta K^m / ((1 - R) K_Ic - Delta K) "
+                           "above a threshold (subsection Forman; needs "
+                           "Material/Fracture toughness).")
+  } // namespace GrowthLaw
+} // namespace xcrack

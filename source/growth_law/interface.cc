@@ -1,0 +1,40 @@
+#include <xcrack/growth_law/interface.h>
+#include <xcrack/simulator_access.h>
+
+namespace xcrack
+{
+  namespace GrowthLaw
+  {
+    void
+    declare_parameters(ParameterHandler &prm)
+    {
+      using List = Plugins::PluginList<Interface<3>>;
+      prm.declare_entry("Model name",
+                        "paris",
+                        Patterns::Selection(List::pattern()),
+                        "The growth rate of each front point:" +
+                          List::documentation());
+      List::declare_parameters(prm);
+    }
+
+
+
+    template <int dim>
+    std::unique_ptr<Interface<dim>>
+    create(ParameterHandler &prm, const Simulator<dim> &simulator)
+    {
+      return create_plugin<dim, Interface<dim>>(
+        prm.get("Model name"),
+        "Propagation/Growth law/Model name",
+        prm,
+        simulator);
+    }
+
+
+
+    template std::unique_ptr<Interface<2>>
+    create(ParameterHandler &, const Simulator<2> &);
+    template std::unique_ptr<Interface<3>>
+    create(ParameterHandler &, const Simulator<3> &);
+  } // namespace GrowthLaw
+} // namespace xcrack

@@ -1,0 +1,317 @@
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <xcrack/crack/crack_surface.h>
+#include <xcrack/input_error.h>
+#include <xcrack/level_set_update/geometric.h>
+#include <xcrack/xfem/enrichment.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <tuple>
+
+namespace xcrack
+{
+  namespace LevelSetUpdate
+  {
+    template <int dim>
+    void
+    Geometric<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometric");
+      prm.declare_entry(
+        "Band radius",
+        "0",
+        Patterns::Double(0),
+        "The nodes within this distance of the front get new level sets; "
+        "farther ones keep lsn and shift lst by the largest advance. 0: "
+        "twice the larger of the enrichment radius and six diameters of "
+        "the cells at the front, plus twice the largest advance.");
+      prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    void
+    Geometric<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      const Plugins::ScopedSubsection scope(prm, "Geometric");
+      band_radius = prm.get_double("Band radius");
+    }
+
+
+
+    template <int dim>
+    double
+    Geometric<dim>::band(const LevelSetFields<dim> &fields,
+                         const unsigned int         crack,
+                         const double               largest_advance) const
+    {
+      if (band_radius > 0)
+        return band_radius;
+      // The largest cell at the front: a vertex nearer to it than the
+      // cell's diameter.
+      const std::vector<double> lsn = fields.vertex_values(crack, true);
+      const std::vector<double> lst = fields.vertex_values(crack, false);
+      double                    h   = 0;
+      for (const auto &cell :
+           fields.get_dof_handler().get_triangulation().active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int v : cell->vertex_indices())
+            if (std::hypot(lsn[cell->vertex_index(v)],
+                           lst[cell->vertex_index(v)]) < cell->diameter())
+              h = std::max(h, cell->diameter());
+      h = Utilities::MPI::max(h, this->get_mpi_communicator());
+      const double radius = (this->get_enrichment() ?
+                               this->get_enrichment()->get_parameters().radius :
+                               0.);
+      return 2 * std::max(radius, 6 * h) + 2 * largest_advance;
+    }
+
+
+
+    namespace
+    {
+      /// What moves at a point of a front: the kink, the advance and the
+      /// frame of K there (smooth along the front, unlike the frames of
+      /// the extracted points, which carry the noise of the level sets'
+      /// gradients).
+      template <int dim>
+      struct Sample
+      {
+        double         angle = 0, advance = 0;
+        Tensor<1, dim> e1, e2;
+
+        Sample
+        operator*(const double w) const
+        {
+          return {angle * w, advance * w, e1 * w, e2 * w};
+        }
+
+        Sample
+        operator+(const Sample &other) const
+        {
+          return {angle + other.angle,
+                  advance + other.advance,
+                  e1 + other.e1,
+                  e2 + other.e2};
+        }
+      };
+
+
+
+      /// The moves along one front, by abscissa.
+      template <int dim>
+      struct Track
+      {
+        std::vector<double>      s;
+        std::vector<Sample<dim>> samples;
+        bool                     closed = false;
+        double                   length = 0;
+
+        /// The sample at abscissa @p x: linear between the points, periodic
+        /// on a closed front, constant beyond the ends of an open one.
+        Sample<dim>
+        at(double x) const
+        {
+          if (s.empty())
+            return {};
+          if (s.size() == 1)
+            return samples[0];
+          if (closed)
+            {
+              x = std::fmod(x - s[0], length);
+              if (x < 0)
+                x += length;
+              x += s[0];
+              // Between the last point and the first one, across s = L.
+              if (x > s.back())
+                {
+                  const double w = (x - s.back()) / (s[0] + length - s.back());
+                  return samples.back() * (1 - w) + samples[0] * w;
+                }
+            }
+          if (x <= s.front())
+            return samples.front();
+          if (x >= s.back())
+            return samples.back();
+          const unsigned int k =
+            std::upper_bound(s.begin(), s.end(), x) - s.begin() - 1;
+          const double w = (x - s[k]) / (s[k + 1] - s[k]);
+          return samples[k] * (1 - w) + samples[k + 1] * w;
+        }
+      };
+
+
+
+      /// The point of @p fronts nearest to @p x: (front, abscissa, point).
+      template <int dim>
+      std::tuple<unsigned int, double, Point<dim>>
+      project(const std::vector<std::vector<FrontPoint<dim>>> &fronts,
+              const Point<dim>                                &x)
+      {
+        double       distance = std::numeric_limits<double>::max();
+        unsigned int front    = 0;
+        double       s        = 0;
+        Point<dim>   nearest;
+        for (unsigned int f = 0; f < fronts.size(); ++f)
+          {
+            const auto &points = fronts[f];
+            // A 2D tip is a front of one point; else its segments.
+            for (unsigned int k = 0; k + (points.size() > 1 ? 1 : 0) <
+                                     std::max<std::size_t>(points.size(), 1);
+                 ++k)
+              {
+                const FrontPoint<dim> &a = points[k];
+                const FrontPoint<dim> &b =
+                  (points.size() > 1 ? points[k + 1] : points[k]);
+                const Tensor<1, dim> edge = b.position - a.position;
+                const double         w =
+                  (edge.norm_square() > 0 ?
+                     std::clamp((x - a.position) * edge / edge.norm_square(),
+                                0.,
+                                1.) :
+                     0.);
+                const Point<dim> y = a.position + w * edge;
+                if (x.distance(y) < distance)
+                  {
+                    distance = x.distance(y);
+                    front    = f;
+                    s        = (1 - w) * a.s + w * b.s;
+                    nearest  = y;
+                  }
+              }
+          }
+        return {front, s, nearest};
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    Geometric<dim>::update(const unsigned int                 crack,
+                           const std::vector<FrontMove<dim>> &moves,
+                           LevelSetFields<dim>               &fields) const
+    {
+      // The moves of each front of the crack, by abscissa.
+      const auto &fronts = this->get_crack_surfaces()[crack].fronts();
+      std::vector<Track<dim>> tracks(fronts.size());
+      double                  largest = 0;
+      for (const FrontMove<dim> &m : moves)
+        if (m.crack == crack)
+          {
+            AssertIndexRange(m.front, fronts.size());
+            tracks[m.front].s.push_back(m.point.s);
+            tracks[m.front].samples.push_back(
+              {m.angle, m.advance, m.point.e1, m.point.e2});
+            largest = std::max(largest, m.advance);
+          }
+      if (largest == 0)
+        return;
+      for (unsigned int f = 0; f < fronts.size(); ++f)
+        {
+          Track<dim>               &t = tracks[f];
+          std::vector<unsigned int> order(t.s.size());
+          for (unsigned int k = 0; k < order.size(); ++k)
+            order[k] = k;
+          std::sort(order.begin(), order.end(), [&](auto a, auto b) {
+            return t.s[a] < t.s[b];
+          });
+          Track<dim> sorted;
+          for (const unsigned int k : order)
+            {
+              sorted.s.push_back(t.s[k]);
+              sorted.samples.push_back(t.samples[k]);
+            }
+          sorted.closed = (fronts[f].size() > 2 && fronts[f].front().position ==
+                                                     fronts[f].back().position);
+          sorted.length = fronts[f].back().s;
+          t             = sorted;
+        }
+
+      const double           radius      = band(fields, crack, largest);
+      const DoFHandler<dim> &dof_handler = fields.get_dof_handler();
+      std::map<types::global_dof_index, Point<dim>> support;
+      DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
+                                           dof_handler,
+                                           support);
+      const MPI_Comm                comm  = this->get_mpi_communicator();
+      const IndexSet                owned = dof_handler.locally_owned_dofs();
+      TrilinosWrappers::MPI::Vector new_lsn(owned, comm), new_lst(owned, comm);
+      const auto                   &old_lsn = fields.lsn(crack);
+      const auto                   &old_lst = fields.lst(crack);
+
+      // The nodes in the band, with their projection on the old fronts and
+      // what moves there.
+      struct Node
+      {
+        types::global_dof_index dof;
+        unsigned int            front;
+        Tensor<1, dim>          d, e1, e2;
+        Sample<dim>             sample;
+      };
+      std::vector<Node> band_nodes;
+      for (const types::global_dof_index dof : owned)
+        {
+          const double n0 = old_lsn[dof], t0 = old_lst[dof];
+          new_lsn[dof] = n0;
+          if (std::hypot(n0, t0) > radius + largest)
+            {
+              new_lst[dof] = t0 - largest;
+              continue;
+            }
+          const auto [front, s, p] = project(fronts, support.at(dof));
+          Node node;
+          node.dof    = dof;
+          node.front  = front;
+          node.d      = support.at(dof) - p;
+          node.sample = tracks[front].at(s);
+          node.e1     = node.sample.e1 / node.sample.e1.norm();
+          node.e2     = node.sample.e2 - (node.sample.e2 * node.e1) * node.e1;
+          node.e2 /= node.e2.norm();
+          band_nodes.push_back(node);
+        }
+
+      // Which way lsn counts along e2 at each front: e2 is the normal of
+      // the frame of K (in 2D e1 turned by +90 degrees), not necessarily
+      // the lsn > 0 side. Behind a front the old lsn is +-(d . e2).
+      std::vector<double> orientation(fronts.size(), 0.);
+      for (const Node &node : band_nodes)
+        if (node.d * node.e1 < 0)
+          orientation[node.front] += old_lsn[node.dof] * (node.d * node.e2);
+      Utilities::MPI::sum(ArrayView<const double>(orientation),
+                          comm,
+                          ArrayView<double>(orientation));
+
+      for (const Node &node : band_nodes)
+        {
+          const double         angle = node.sample.angle;
+          const Tensor<1, dim> e1 =
+            std::cos(angle) * node.e1 + std::sin(angle) * node.e2;
+          const Tensor<1, dim> e2 =
+            -std::sin(angle) * node.e1 + std::cos(angle) * node.e2;
+          new_lst[node.dof] = node.d * e1 - node.sample.advance;
+          if (node.d * (node.e1 + e1) > 0)
+            new_lsn[node.dof] =
+              (orientation[node.front] < 0 ? -1. : 1.) * (node.d * e2);
+        }
+      new_lsn.compress(VectorOperation::insert);
+      new_lst.compress(VectorOperation::insert);
+      fields.set(crack, new_lsn, new_lst);
+    }
+
+    XCRACK_REGISTER_PLUGIN(Interface,
+                           Geometric,
+                           "geometric",
+                           "no PDE: the nodes near the front are projected on "
+                           "it and get the distances to the advanced, kinked "
+                           "front; the surface behind it is kept "
+                           "(subsection Geometric).")
+  } // namespace LevelSetUpdate
+} // namespace xcrack

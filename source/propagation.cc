@@ -1,0 +1,315 @@
+#include <xcrack/input_error.h>
+#include <xcrack/material.h>
+#include <xcrack/propagation.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace xcrack
+{
+  template <int dim>
+  void
+  Propagation<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Propagation");
+    {
+      prm.declare_entry(
+        "Number of steps",
+        "0",
+        Patterns::Integer(0),
+        "Propagation steps after the first solve (0: a static analysis). A "
+        "termination criterion may stop the run earlier.");
+      prm.declare_entry(
+        "Maximum advance",
+        "0",
+        Patterns::Double(),
+        "The advance of the fastest point of all fronts in one step, in "
+        "length units (> 0 with Number of steps > 0). About one or two "
+        "front cells: the path and the cycles converge as it shrinks.");
+      prm.declare_entry("Load ratio",
+                        "0",
+                        Patterns::Double(),
+                        "R = K_min / K_max of the load cycle (< 1); the "
+                        "loads of the file are the maximum.");
+      prm.declare_entry(
+        "Equivalent K",
+        "energy release rate",
+        Patterns::Selection("energy release rate|criterion"),
+        "K_eq of a front point: sqrt(E' G), G = (K_I^2 + K_II^2) / E' + "
+        "K_III^2 / (2 mu) from the extracted K's (all three modes), or the "
+        "direction criterion's own (with Mode III).");
+      prm.declare_entry("Mode III",
+                        "ignored",
+                        Patterns::Selection("ignored|added"),
+                        "With Equivalent K = criterion: whether K_III adds "
+                        "K_III^2 / (1 - nu) to K_eq^2 (as the energy "
+                        "release rate does). Mode III never twists the "
+                        "front.");
+      prm.enter_subsection("Direction criterion");
+      DirectionCriterion::declare_parameters(prm);
+      prm.leave_subsection();
+      prm.enter_subsection("Growth law");
+      GrowthLaw::declare_parameters(prm);
+      prm.leave_subsection();
+      prm.enter_subsection("Level set update");
+      LevelSetUpdate::declare_parameters(prm);
+      prm.leave_subsection();
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  Propagation<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    const Plugins::ScopedSubsection scope(prm, "Propagation");
+    steps        = prm.get_integer("Number of steps");
+    advance      = prm.get_double("Maximum advance");
+    load_ratio   = prm.get_double("Load ratio");
+    equivalent_k = (prm.get("Equivalent K") == "criterion" ?
+                      EquivalentK::criterion :
+                      EquivalentK::energy_release_rate);
+    add_mode_III = (prm.get("Mode III") == "added");
+    check_input(steps == 0 || advance > 0,
+                "Propagation/Maximum advance = " + prm.get("Maximum advance") +
+                  ": must be positive when Number of steps > 0.");
+    check_input(load_ratio < 1,
+                "Propagation/Load ratio = " + prm.get("Load ratio") +
+                  ": must be below 1 (R = K_min / K_max).");
+    // The plugins only when the cracks grow: a static analysis need not
+    // give a growth law its constants.
+    if (steps == 0)
+      return;
+    const Simulator<dim> &simulator = this->get_simulator();
+    {
+      const Plugins::ScopedSubsection s(prm, "Direction criterion");
+      direction_criterion = DirectionCriterion::create<dim>(prm, simulator);
+    }
+    {
+      const Plugins::ScopedSubsection s(prm, "Growth law");
+      growth_law = GrowthLaw::create<dim>(prm, simulator);
+    }
+    {
+      const Plugins::ScopedSubsection s(prm, "Level set update");
+      level_set_update = LevelSetUpdate::create<dim>(prm, simulator);
+    }
+  }
+
+
+
+  template <int dim>
+  bool
+  Propagation<dim>::enabled() const
+  {
+    return steps > 0;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Propagation<dim>::n_steps() const
+  {
+    return steps;
+  }
+
+
+
+  template <int dim>
+  double
+  Propagation<dim>::maximum_advance() const
+  {
+    return advance;
+  }
+
+
+
+  template <int dim>
+  bool
+  Propagation<dim>::counts_cycles() const
+  {
+    return growth_law && growth_law->counts_cycles();
+  }
+
+
+
+  template <int dim>
+  std::vector<FrontMove<dim>>
+  Propagation<dim>::moves(const std::vector<FrontValues<dim>> &values,
+                          const std::vector<unsigned int>     &fronts_per_crack,
+                          const double largest_advance) const
+  {
+    Assert(enabled(), ExcInternalError());
+    const Material             &material = this->get_material();
+    const double                e_prime  = material.e_prime(dim);
+    const double                r        = std::max(load_ratio, 0.);
+    std::vector<FrontMove<dim>> result;
+    for (const FrontValues<dim> &v : values)
+      {
+        FrontMove<dim> m;
+        m.front = v.front;
+        while (m.crack < fronts_per_crack.size() &&
+               m.front >= fronts_per_crack[m.crack])
+          m.front -= fronts_per_crack[m.crack++];
+        m.point         = v.point;
+        const double kI = std::max(v.k_I, 0.);
+        m.angle         = direction_criterion->kink_angle(kI, v.k_II);
+        // Irwin's G from the interaction integral's K's, the more accurate
+        // of the two extractions (G-theta is the cross-check).
+        if (equivalent_k == EquivalentK::energy_release_rate)
+          m.k_eq = std::sqrt(std::max(e_prime * v.g_irwin, 0.));
+        else
+          {
+            m.k_eq = direction_criterion->equivalent_k(kI, v.k_II);
+            if (add_mode_III)
+              m.k_eq =
+                std::sqrt(m.k_eq * m.k_eq +
+                          v.k_III * v.k_III / (1 - material.poisson_ratio));
+          }
+        m.delta_k = (1 - r) * m.k_eq;
+        m.rate    = growth_law->rate(m.delta_k, m.k_eq, load_ratio);
+        result.push_back(m);
+      }
+    scale_advances(result, largest_advance);
+    return result;
+  }
+
+
+
+  template <int dim>
+  void
+  Propagation<dim>::scale_advances(std::vector<FrontMove<dim>> &moves,
+                                   const double                 largest)
+  {
+    const FrontMove<dim> *f        = fastest(moves);
+    const double          rate_max = (f ? f->rate : 0.);
+    for (FrontMove<dim> &m : moves)
+      m.advance = (rate_max == 0        ? 0. :
+                   std::isinf(rate_max) ? (std::isinf(m.rate) ? largest : 0.) :
+                                          largest * m.rate / rate_max);
+  }
+
+
+
+  template <int dim>
+  const FrontMove<dim> *
+  Propagation<dim>::fastest(const std::vector<FrontMove<dim>> &moves)
+  {
+    const FrontMove<dim> *f = nullptr;
+    for (const FrontMove<dim> &m : moves)
+      if (m.rate > 0 && (!f || m.rate > f->rate))
+        f = &m;
+    return f;
+  }
+
+
+
+  template <int dim>
+  double
+  Propagation<dim>::k_eq_at(const Point<dim>                  &x,
+                            const unsigned int                 crack,
+                            const std::vector<FrontMove<dim>> &moves) const
+  {
+    // The nearest point of the polylines through the K points of each
+    // front of the crack, K_eq linear between them.
+    double distance = std::numeric_limits<double>::max(), k = 0;
+    for (unsigned int i = 0; i < moves.size(); ++i)
+      {
+        if (moves[i].crack != crack)
+          continue;
+        const Point<dim> &a = moves[i].point.position;
+        if (x.distance(a) < distance)
+          {
+            distance = x.distance(a);
+            k        = moves[i].k_eq;
+          }
+        if (i + 1 < moves.size() && moves[i + 1].crack == crack &&
+            moves[i + 1].front == moves[i].front)
+          {
+            const Point<dim>    &b    = moves[i + 1].point.position;
+            const Tensor<1, dim> edge = b - a;
+            if (edge.norm_square() == 0)
+              continue;
+            const double w =
+              std::clamp((x - a) * edge / edge.norm_square(), 0., 1.);
+            const Point<dim> y = a + w * edge;
+            if (x.distance(y) < distance)
+              {
+                distance = x.distance(y);
+                k        = (1 - w) * moves[i].k_eq + w * moves[i + 1].k_eq;
+              }
+          }
+      }
+    return k;
+  }
+
+
+
+  template <int dim>
+  double
+  Propagation<dim>::cycles(const FrontMove<dim>              &before,
+                           const std::vector<FrontMove<dim>> &now) const
+  {
+    if (!counts_cycles() || before.advance == 0)
+      return 0;
+    const double r  = std::max(load_ratio, 0.);
+    const double k0 = before.k_eq;
+    const double k1 = k_eq_at(before.new_position(), before.crack, now);
+    const auto   inverse_rate = [&](const double t) {
+      const double k    = std::sqrt((1 - t) * k0 * k0 + t * k1 * k1);
+      const double rate = growth_law->rate((1 - r) * k, k, load_ratio);
+      return (rate > 0 ? 1 / rate : std::numeric_limits<double>::infinity());
+    };
+    // 5-point Gauss-Legendre on [0, 1].
+    const double x[5]     = {0.04691007703066800,
+                             0.23076534494715845,
+                             0.5,
+                             0.76923465505284155,
+                             0.95308992296933200};
+    const double w[5]     = {0.11846344252809454,
+                             0.23931433524968324,
+                             0.28444444444444444,
+                             0.23931433524968324,
+                             0.11846344252809454};
+    double       integral = 0;
+    for (unsigned int q = 0; q < 5; ++q)
+      integral += w[q] * inverse_rate(x[q]);
+    // Arrest within the step (a rate of zero on the way): the cycle jump
+    // of the step's start is all that can be said.
+    if (std::isinf(integral))
+      return before.advance / before.rate;
+    return before.advance * integral;
+  }
+
+
+
+  template <int dim>
+  void
+  Propagation<dim>::update_level_sets(const std::vector<FrontMove<dim>> &moves,
+                                      LevelSetFields<dim> &fields) const
+  {
+    for (unsigned int c = 0; c < fields.n_cracks(); ++c)
+      level_set_update->update(c, moves, fields);
+  }
+
+
+
+  template <int dim>
+  double
+  Propagation<dim>::load_factor(const std::vector<FrontMove<dim>> &moves) const
+  {
+    double k_max = 0;
+    for (const FrontMove<dim> &m : moves)
+      k_max = std::max(k_max, m.k_eq);
+    const double toughness = this->get_material().fracture_toughness;
+    return (k_max > 0 && toughness > 0 ? toughness / k_max : 0.);
+  }
+
+
+
+  template class Propagation<2>;
+  template class Propagation<3>;
+} // namespace xcrack

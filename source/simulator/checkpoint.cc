@@ -1,0 +1,150 @@
+#include <deal.II/base/mpi.h>
+
+#include <xcrack/input_error.h>
+#include <xcrack/run.h>
+#include <xcrack/simulator.h>
+
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/map.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+#include <filesystem>
+#include <fstream>
+
+namespace xcrack
+{
+  namespace
+  {
+    /// The version of the checkpoint format: a change of the state below
+    /// must change it, so that an old checkpoint is refused, not misread.
+    constexpr unsigned int checkpoint_version = 1;
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_checkpoint()
+  {
+    // Written to checkpoint.tmp, then renamed: a run killed at any moment
+    // leaves the previous checkpoint (checkpoint, or checkpoint.old during
+    // the two renames) whole.
+    namespace fs          = std::filesystem;
+    const fs::path output = run_parameters.output_directory;
+    const fs::path tmp    = output / "checkpoint.tmp";
+    const fs::path old    = output / "checkpoint.old";
+    const fs::path done   = output / "checkpoint";
+    const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
+    if (root)
+      {
+        fs::remove_all(tmp);
+        fs::create_directories(tmp);
+      }
+    MPI_Barrier(mpi_communicator);
+
+    level_sets.prepare_for_serialization();
+    triangulation.save((tmp / "mesh").string());
+    if (root)
+      {
+        std::ofstream                   file(tmp / "state", std::ios::binary);
+        boost::archive::binary_oarchive archive(file);
+        const unsigned int              version = checkpoint_version;
+        const unsigned int              d       = dim;
+        const unsigned int              n_ranks =
+          Utilities::MPI::n_mpi_processes(mpi_communicator);
+        const unsigned int n_cracks    = cracks.size();
+        const unsigned int next_step   = step + 1;
+        const bool         has_fastest = previous_fastest.has_value();
+        FrontMove<dim> fastest = previous_fastest.value_or(FrontMove<dim>());
+        archive << version << d << n_ranks << n_cracks << next_step << cycles
+                << cracks_moved << has_fastest << fastest << statistics
+                << pvd_records << crack_records;
+        file.close();
+        AssertThrow(file,
+                    ExcMessage("Could not write the checkpoint in " +
+                               tmp.string() + "."));
+        // Every parameter, so that the run resumes from the checkpoint alone.
+        prm.print_parameters((tmp / "parameters.prm").string(),
+                             ParameterHandler::ShortPRM);
+        if (fs::exists(done))
+          fs::rename(done, old);
+        fs::rename(tmp, done);
+        fs::remove_all(old);
+      }
+    MPI_Barrier(mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::read_checkpoint(const std::string &directory)
+  {
+    const std::string dir = checkpoint_of(directory);
+    // The state first: a checkpoint of something else is refused before
+    // the mesh is touched.
+    std::ifstream                   file(dir + "/state", std::ios::binary);
+    boost::archive::binary_iarchive archive(file);
+    unsigned int   version = 0, d = 0, n_ranks = 0, n_cracks = 0, next_step = 0;
+    bool           has_fastest = false;
+    FrontMove<dim> fastest;
+    archive >> version >> d >> n_ranks >> n_cracks;
+    check_input(version == checkpoint_version && d == dim &&
+                  n_cracks == cracks.size(),
+                "--resume " + directory +
+                  ": the checkpoint was written by another version of xcrack "
+                  "or for another problem.");
+    archive >> next_step >> cycles >> cracks_moved >> has_fastest >> fastest >>
+      statistics >> pvd_records >> crack_records;
+    step = next_step;
+    if (has_fastest)
+      previous_fastest = fastest;
+    else
+      previous_fastest.reset();
+
+    load_mesh(dir);
+    if (n_ranks != Utilities::MPI::n_mpi_processes(mpi_communicator))
+      pcout << "Warning: the checkpoint was written on " << n_ranks
+            << " ranks; on another number the mesh is partitioned anew and "
+               "the results may differ in the last digits."
+            << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::load_mesh(const std::string &checkpoint)
+  {
+    // load() wants the coarse mesh alone.
+    triangulation.clear();
+    mesh_description.create(triangulation, /*refine=*/false);
+    triangulation.load(checkpoint + "/mesh");
+    level_sets.deserialize(cracks.size());
+  }
+
+
+
+  std::string
+  checkpoint_of(const std::string &directory)
+  {
+    namespace fs = std::filesystem;
+    for (const std::string name : {"checkpoint", "checkpoint.old"})
+      {
+        const fs::path dir = fs::path(directory) / name;
+        if (fs::exists(dir / "state") && fs::exists(dir / "parameters.prm"))
+          return dir.string();
+      }
+    throw InputError("--resume " + directory +
+                     ": no checkpoint there (a directory 'checkpoint' with "
+                     "the files 'state' and 'parameters.prm', written by a "
+                     "propagation run after each step).");
+  }
+
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace xcrack

@@ -1,0 +1,157 @@
+#include <xcrack/simulator.h>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace xcrack
+{
+  template <int dim>
+  std::vector<unsigned int>
+  Simulator<dim>::fronts_per_crack() const
+  {
+    std::vector<unsigned int> n;
+    for (const auto &surface : crack_surfaces)
+      n.push_back(surface.fronts().size());
+    return n;
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::grow()
+  {
+    // The moves at the nominal advance, and the cycles the last advance
+    // took (known now that K at its end is).
+    front_moves         = propagation.moves(front_values,
+                                    fronts_per_crack(),
+                                    propagation.maximum_advance());
+    double delta_cycles = 0;
+    if (previous_fastest)
+      {
+        delta_cycles = propagation.cycles(*previous_fastest, front_moves);
+        cycles += delta_cycles;
+      }
+    statistics.add_value("cycles", cycles);
+
+    // What ends the run, if anything; else how far the next step may go.
+    TerminationCriteria::Verdict verdict;
+    for (const auto &criterion : termination_criteria)
+      if (!verdict.stop)
+        verdict = criterion->check();
+    if (!verdict.stop && step >= propagation.n_steps())
+      {
+        verdict.stop   = true;
+        verdict.reason = "the last step (Propagation/Number of steps = " +
+                         std::to_string(propagation.n_steps()) + ")";
+      }
+    double largest = propagation.maximum_advance();
+    if (!verdict.stop)
+      for (const auto &criterion : termination_criteria)
+        largest = std::min(largest, criterion->limit_advance(largest));
+    if (!verdict.stop &&
+        (!Propagation<dim>::fastest(front_moves) || !(largest > 0)))
+      {
+        verdict.stop   = true;
+        verdict.reason = "no front point grows any more";
+      }
+    Propagation<dim>::scale_advances(front_moves, verdict.stop ? 0. : largest);
+    if (!verdict.stop)
+      previous_fastest = *Propagation<dim>::fastest(front_moves);
+
+    double size = 0, k_max = 0, delta_k = 0;
+    for (const auto &surface : crack_surfaces)
+      size += surface.measure();
+    for (const FrontMove<dim> &m : front_moves)
+      {
+        k_max   = std::max(k_max, m.k_eq);
+        delta_k = std::max(delta_k, m.delta_k);
+      }
+    statistics.add_value("K_max", k_max);
+    statistics.add_value("delta_K", delta_k);
+    statistics.add_value("delta_cycles", delta_cycles);
+    statistics.add_value("advance", verdict.stop ? 0. : largest);
+    if (!propagation.counts_cycles())
+      statistics.add_value("load_factor", propagation.load_factor(front_moves));
+
+    // One line per step.
+    std::ostringstream line;
+    line << "Step " << step << ": " << std::scientific << std::setprecision(4);
+    if (propagation.counts_cycles())
+      line << "N = " << cycles << " (+" << std::setprecision(3) << delta_cycles
+           << "), ";
+    else
+      line << "load factor " << propagation.load_factor(front_moves) << ", ";
+    line << std::setprecision(4) << (dim == 2 ? "length " : "area ") << size
+         << ", K_max " << k_max;
+    if (!verdict.stop)
+      line << ", next advance " << std::setprecision(3) << largest;
+    line << std::defaultfloat << ", " << triangulation.n_global_active_cells()
+         << " cells";
+    // The wall time so far, and what remains if the run goes on as it went:
+    // by the step count or the criterion nearest to its target.
+    if (run_parameters.timing_summary)
+      {
+        const double elapsed = std::chrono::duration<double>(
+                                 std::chrono::steady_clock::now() - start_time)
+                                 .count();
+        double progress = double(step) / std::max(propagation.n_steps(), 1u);
+        for (const auto &criterion : termination_criteria)
+          progress = std::max(progress, criterion->progress());
+        line << ", " << std::fixed << std::setprecision(1) << elapsed << " s";
+        if (!verdict.stop && progress > 0)
+          line << " (about " << elapsed * (1 - progress) / progress
+               << " s left)";
+        line << std::defaultfloat;
+      }
+    pcout << line.str() << std::endl;
+    for (const FrontValues<dim> &v : front_values)
+      if (!v.crown_clear)
+        {
+          pcout << "  Warning: a crown reaches the boundary or another front "
+                   "at ("
+                << v.point.position
+                << "): its K, and the growth there, are unreliable."
+                << std::endl;
+          break;
+        }
+    if (verdict.stop)
+      pcout << (verdict.failure ? "Failure: " : "End: ") << verdict.reason
+            << "." << std::endl;
+    return verdict.stop;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::advance_cracks()
+  {
+    {
+      TimerOutput::Scope t(*timer, "levelset");
+      propagation.update_level_sets(front_moves, level_sets);
+      cracks_moved = true;
+    }
+    {
+      TimerOutput::Scope t(*timer, "refine");
+      adapt_mesh_to_fronts();
+    }
+    {
+      TimerOutput::Scope t(*timer, "checkpoint");
+      write_checkpoint();
+      // Continue from the mesh just written, as a resumed run does: the
+      // order of its cells (and so the numbering of the DoFs and the order
+      // of the sums of assembly) is that of a loaded mesh, which differs
+      // from that of a mesh refined and coarsened in place. A run killed
+      // and resumed then reaches the same results to the last digit.
+      load_mesh(run_parameters.output_directory + "/checkpoint");
+    }
+  }
+
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace xcrack

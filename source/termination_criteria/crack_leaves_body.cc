@@ -1,0 +1,69 @@
+#include <deal.II/base/mpi.h>
+
+#include <xcrack/crack/crack_surface.h>
+#include <xcrack/front_move.h>
+#include <xcrack/termination_criteria/crack_leaves_body.h>
+
+#include <sstream>
+
+namespace xcrack
+{
+  namespace TerminationCriteria
+  {
+    template <int dim>
+    Verdict
+    CrackLeavesBody<dim>::check()
+    {
+      Verdict     verdict;
+      const auto &surfaces = this->get_crack_surfaces();
+      if (n_fronts.empty())
+        for (const auto &surface : surfaces)
+          n_fronts.push_back(surface.fronts().size());
+      for (unsigned int c = 0; c < surfaces.size(); ++c)
+        if (surfaces[c].fronts().size() != n_fronts[c])
+          {
+            std::ostringstream reason;
+            reason << "crack " << c + 1 << " now has "
+                   << surfaces[c].fronts().size()
+                   << (dim == 2 ? " tips" : " fronts") << " instead of "
+                   << n_fronts[c] << ": it reached the surface of the body";
+            verdict.stop   = true;
+            verdict.reason = reason.str();
+            return verdict;
+          }
+      if (dim == 3)
+        return verdict;
+      // A 2D tip that the next advance would put outside the body.
+      for (const FrontMove<dim> &m : this->get_front_moves())
+        {
+          if (m.advance == 0)
+            continue;
+          const Point<dim> x      = m.new_position();
+          bool             inside = false;
+          for (const auto &cell :
+               this->get_triangulation().active_cell_iterators())
+            if (cell->is_locally_owned() && cell->point_inside(x))
+              {
+                inside = true;
+                break;
+              }
+          if (!Utilities::MPI::logical_or(inside, this->get_mpi_communicator()))
+            {
+              std::ostringstream reason;
+              reason << "the tip of crack " << m.crack + 1 << " at ("
+                     << m.point.position << ") would leave the body";
+              verdict.stop   = true;
+              verdict.reason = reason.str();
+              return verdict;
+            }
+        }
+      return verdict;
+    }
+
+    XCRACK_REGISTER_PLUGIN(Interface,
+                           CrackLeavesBody,
+                           "crack leaves body",
+                           "a 2D tip would leave the body, or a crack's "
+                           "fronts change in number.")
+  } // namespace TerminationCriteria
+} // namespace xcrack

@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# Requirement: a propagation run killed (SIGKILL) at a random moment after
+# its first checkpoint and continued with `xcrack --resume DIR` ends with
+# the same statistics.csv (every column but the wall times) and the same
+# front files as the run left alone: to the last digit on one rank, to
+# round-off (1e-12 of the largest value in each row) on two. (The scene:
+# tests/growth_center_2d.)
+#
+#   resume.sh XCRACK_EXECUTABLE SCENE.prm
+set -u
+xcrack="$1"
+scene="$2"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+failures=0
+fail() { echo "FAILED: $*"; failures=$((failures + 1)); }
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1
+
+# same_results WHOLE RESUMED TOLERANCE: statistics.csv (but the wall times)
+# and every front file equal, each number to TOLERANCE times the largest
+# magnitude in its row (0: to the last digit).
+same_results() {
+  python3 - "$1" "$2" "$3" <<'PYTHON'
+import csv, glob, os, sys
+a, b, tolerance = sys.argv[1], sys.argv[2], float(sys.argv[3])
+def table(path, keep=lambda column: True):
+    with open(path) as f:
+        return [{k: v for k, v in r.items() if keep(k)} for r in csv.DictReader(f)]
+def differences(x, y, name):
+    if len(x) != len(y) or (x and x[0].keys() != y[0].keys()):
+        return [f"{name}: different rows or columns"]
+    found = []
+    for i, (r, s) in enumerate(zip(x, y)):
+        number = lambda t: float(t) if t else 0.
+        scale = max([abs(number(t)) for t in list(r.values()) + list(s.values())] + [0.])
+        for column in r:
+            u, v = number(r[column]), number(s[column])
+            if abs(u - v) > tolerance * scale:
+                found.append(f"{name} row {i}: {column} {u!r} != {v!r}")
+    return found
+found = differences(table(os.path.join(a, "statistics.csv"), lambda c: not c.startswith("t_")),
+                    table(os.path.join(b, "statistics.csv"), lambda c: not c.startswith("t_")),
+                    "statistics.csv")
+fronts = sorted(os.path.basename(f) for f in glob.glob(os.path.join(a, "front_*.csv")))
+if fronts != sorted(os.path.basename(f) for f in glob.glob(os.path.join(b, "front_*.csv"))):
+    found.append("not the same front files")
+else:
+    for f in fronts:
+        found += differences(table(os.path.join(a, f)), table(os.path.join(b, f)), f)
+for line in found[:10]:
+    print("  " + line)
+sys.exit(1 if found else 0)
+PYTHON
+}
+
+for ranks in 1 2; do
+  launch=("$xcrack")
+  [ "$ranks" -gt 1 ] && launch=(mpirun -np "$ranks" "$xcrack")
+  sed 's#^set Output directory.*#set Output directory = whole#' "$scene" > whole.prm
+  sed 's#^set Output directory.*#set Output directory = killed#' "$scene" > killed.prm
+  rm -rf whole killed
+  "${launch[@]}" whole.prm > whole.log 2>&1 || fail "$ranks rank(s): the whole run failed"
+
+  "${launch[@]}" killed.prm > killed.log 2>&1 &
+  run=$!
+  for _ in $(seq 1 6000); do [ -d killed/checkpoint ] && break; sleep 0.01; done
+  sleep "0.$((RANDOM % 10))"
+  pkill -9 -f "xcrack killed.prm"
+  wait "$run" 2> /dev/null
+  [ -d killed/checkpoint ] || fail "$ranks rank(s): no checkpoint was written"
+  "${launch[@]}" --resume killed > resumed.log 2>&1 ||
+    { fail "$ranks rank(s): --resume failed"; cat resumed.log; }
+  # On one rank to the last digit. On two, a quantity that vanishes by
+  # symmetry (K_II = 1e-9 here, against K_I = 0.8) was once seen to differ
+  # in its 8th digit after a resume: allow round-off of the row's scale.
+  tolerance=0
+  [ "$ranks" -gt 1 ] && tolerance=1e-12
+  same_results whole killed "$tolerance" ||
+    { fail "$ranks rank(s): the resumed run differs from the whole one"
+      ls killed; cat resumed.log; }
+done
+
+if [ "$failures" -eq 0 ]; then
+  echo "cli/resume: all checks passed"
+else
+  echo "cli/resume: $failures check(s) failed"
+  exit 1
+fi
