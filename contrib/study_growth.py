@@ -5,6 +5,7 @@ for doc/verification.md and doc/performance.md.
     contrib/build.sh release
     /usr/bin/python3 contrib/study_growth.py paris [--jobs 2]
     /usr/bin/python3 contrib/study_growth.py cost [--runs 3]
+    /usr/bin/python3 contrib/study_growth.py dcb [--jobs 2]
 
 `paris`: prm/benchmarks/paris_center_2d.prm (Griffith centre crack,
 a0 = 1 mm -> af = 10 mm, closed form 776,634 cycles) for several values of
@@ -14,6 +15,12 @@ crack in a plate 50 mm wide (a/b from 0.04 to 0.4), whose reference is the
 quadrature of the Paris law with Tada's finite-width factor (744,562.39
 cycles): there K^2 is not linear in a and the cycles converge with the
 advance.
+
+`dcb`: prm/benchmarks/dcb_2d.prm (BENCHMARKS.md Case 11) for the three
+initial kinks, with Maximum advance 0.1 and 0.05 and, at 0.05, a mesh
+refined once more: the height of the path at x = 4.6, 5.0 and 5.4 (the
+ordering of the kinks, the convergence in advance and mesh) and the figure
+doc/figures/dcb_paths.png.
 
 `cost`: the wall time of each phase of a step (solve, assembly, K, level-set
 update, refinement, checkpoint, output) on the 2D benchmark and on a coarse
@@ -97,6 +104,91 @@ def paris(args):
                   f"{max(cells + [first])} | {wall:.0f} |")
 
 
+def tip_path(work):
+    """The tip positions of a 2D run in work/out, step by step."""
+    import csv
+    import glob
+    import re
+    points = {}
+    for path in glob.glob(os.path.join(work, "out", "front_*.csv")):
+        match = re.match(r"front_(\d+)\.csv$", os.path.basename(path))
+        if match:
+            with open(path) as f:
+                rows = list(csv.DictReader(f))
+            if rows:
+                points[int(match.group(1))] = (float(rows[0]["x"]),
+                                              float(rows[0]["y"]))
+    return [points[k] for k in sorted(points)]
+
+
+def height_at(path, x):
+    """y of the path at abscissa x (linear between the tips), or None."""
+    for (x0, y0), (x1, y1) in zip(path, path[1:]):
+        if x0 <= x <= x1 and x1 > x0:
+            return y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+    return None
+
+
+def dcb(args):
+    dcb_prm = os.path.join(top, "prm", "benchmarks", "dcb_2d.prm")
+    variants = []
+    for kink in ["1.43", "2.86", "5.71"]:
+        for advance, levels in [(0.1, 3), (0.05, 3), (0.05, 4)]:
+            variants.append((kink, advance, levels))
+
+    def one(variant):
+        kink, advance, levels = variant
+        with tempfile.TemporaryDirectory() as work:
+            text = (f"include {dcb_prm}\n"
+                    f"set Output directory = {os.path.join(work, 'out')}\n"
+                    "subsection Output\n  set Timing summary = false\nend\n"
+                    "subsection Cracks\n  subsection Crack 1\n"
+                    f"    set File name = {top}/prm/cracks/dcb_kink_{kink}.msh\n"
+                    "  end\nend\n"
+                    f"subsection Propagation\n  set Maximum advance = {advance}\n"
+                    "  set Number of steps = 400\nend\n"
+                    f"subsection Mesh refinement\n  set Number of meshes = {levels + 1}\n"
+                    f"  set Maximum level = {levels}\nend\n")
+            run_xcrack(text, work)
+            return variant, tip_path(work)
+
+    with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+        paths = dict(pool.map(one, variants))
+    print("| theta0 (deg) | advance | front cells | y(4.6) | y(5.0) | y(5.4) |")
+    print("|---|---|---|---|---|---|")
+    for variant in variants:
+        kink, advance, levels = variant
+        heights = [height_at(paths[variant], x) for x in (4.6, 5.0, 5.4)]
+        print(f"| {kink} | {advance} | {11.8 / 30 / 2 ** levels:.3f} | " +
+              " | ".join("-" if y is None else f"{y:.3f}" for y in heights) +
+              " |")
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        return
+    fig, ax = plt.subplots(figsize=(6.5, 3.5))
+    colours = {"1.43": "C0", "2.86": "C1", "5.71": "C2"}
+    styles = {(0.1, 3): ":", (0.05, 3): "--", (0.05, 4): "-"}
+    for variant, path in paths.items():
+        kink, advance, levels = variant
+        ax.plot([p[0] for p in path], [p[1] for p in path],
+                styles[(advance, levels)], color=colours[kink],
+                label=f"{kink} deg, advance {advance}, h {11.8 / 30 / 2 ** levels:.3f}")
+    ax.set_xlim(3.9, 6.5)
+    ax.set_ylim(-0.1, 1.97)
+    ax.set_xlabel("x")
+    ax.set_ylabel("y")
+    ax.set_title("DCB: tip paths (beam top at y = 1.97)")
+    ax.legend(fontsize=6)
+    ax.grid(True, lw=0.3)
+    fig.tight_layout()
+    path = os.path.join(top, "doc", "figures", "dcb_paths.png")
+    fig.savefig(path, dpi=120)
+    print(f"\nwrote {path}")
+
+
 def cost(args):
     scenes = {
         "paris_center_2d (2D, Maximum advance 1 mm)": (
@@ -135,11 +227,11 @@ def cost(args):
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("study", choices=["paris", "cost"])
+    parser.add_argument("study", choices=["paris", "cost", "dcb"])
     parser.add_argument("--jobs", type=int, default=1)
     parser.add_argument("--runs", type=int, default=3)
     args = parser.parse_args()
-    {"paris": paris, "cost": cost}[args.study](args)
+    {"paris": paris, "cost": cost, "dcb": dcb}[args.study](args)
 
 
 if __name__ == "__main__":

@@ -256,21 +256,52 @@ namespace xcrack
         Tensor<1, dim>          d, e1, e2;
         Sample<dim>             sample;
       };
+      // The box of the old fronts, widened by the band: nodes outside are
+      // not projected.
+      Point<dim> lower, upper;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower[d] = std::numeric_limits<double>::max();
+          upper[d] = -std::numeric_limits<double>::max();
+        }
+      for (const auto &front : fronts)
+        for (const FrontPoint<dim> &point : front)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              lower[d] =
+                std::min(lower[d], point.position[d] - radius - largest);
+              upper[d] =
+                std::max(upper[d], point.position[d] + radius + largest);
+            }
+
       std::vector<Node> band_nodes;
       for (const types::global_dof_index dof : owned)
         {
-          const double n0 = old_lsn[dof], t0 = old_lst[dof];
+          const Point<dim> &x  = support.at(dof);
+          const double      n0 = old_lsn[dof], t0 = old_lst[dof];
           new_lsn[dof] = n0;
-          if (std::hypot(n0, t0) > radius + largest)
+          bool in_box  = true;
+          for (unsigned int d = 0; d < dim; ++d)
+            in_box = in_box && x[d] >= lower[d] && x[d] <= upper[d];
+          const auto [front, s, p] =
+            (in_box ? project(fronts, x) :
+                      std::make_tuple(0u, 0., Point<dim>()));
+          if (!in_box || x.distance(p) > radius + largest)
             {
-              new_lst[dof] = t0 - largest;
+              // Far from the front only the signs matter, and the front
+              // cannot have passed a node farther than the advance: behind
+              // stays behind, ahead (or aside, where the crack turned away)
+              // stays ahead. (Shifting every lst by the advance, old
+              // extension planes that the crack turned away from became
+              // cracks after enough steps.)
+              new_lst[dof] =
+                (t0 <= 0 ? t0 - largest : std::max(t0 - largest, 0.5 * t0));
               continue;
             }
-          const auto [front, s, p] = project(fronts, support.at(dof));
           Node node;
           node.dof    = dof;
           node.front  = front;
-          node.d      = support.at(dof) - p;
+          node.d      = x - p;
           node.sample = tracks[front].at(s);
           node.e1     = node.sample.e1 / node.sample.e1.norm();
           node.e2     = node.sample.e2 - (node.sample.e2 * node.e1) * node.e1;
@@ -297,7 +328,11 @@ namespace xcrack
           const Tensor<1, dim> e2 =
             -std::sin(angle) * node.e1 + std::cos(angle) * node.e2;
           new_lst[node.dof] = node.d * e1 - node.sample.advance;
-          if (node.d * (node.e1 + e1) > 0)
+          // The old lsn is the crack surface only behind the old front;
+          // ahead of it, it is an extension plane, which a crack that turned
+          // leaves behind (its zeros, with the new lst < 0 there, would make
+          // a piece of crack where there is none): the new plane there too.
+          if (node.d * (node.e1 + e1) > 0 || old_lst[node.dof] > 0)
             new_lsn[node.dof] =
               (orientation[node.front] < 0 ? -1. : 1.) * (node.d * e2);
         }

@@ -25,10 +25,15 @@ namespace xcrack
      * - lsn = d . e2' on the side of the new segment, i.e. where
      *   d . (e1 + e1') > 0 (the bisector of the kink: lsn is continuous
      *   across it), and the old lsn on the other side, so that the crack
-     *   surface behind the old front stays where it was.
+     *   surface behind the old front stays where it was; but where the old
+     *   lst > 0 the old lsn was an extension plane, not the crack, and the
+     *   new plane replaces it on both sides (else the extension planes of
+     *   a crack that keeps turning pile up, and their zeros become
+     *   spurious pieces of crack).
      *
-     * Nodes farther away keep lsn and shift lst by the largest advance:
-     * only their signs matter there. A 2D tip is a front of one point; a
+     * Nodes farther away keep lsn, and lst keeps its sign (behind stays
+     * behind, ahead stays ahead: the front moved less than the band): only
+     * the signs matter there. A 2D tip is a front of one point; a
      * 3D front may be open (ending on the body's surface) or closed.
      */
     template <int dim>
