@@ -351,10 +351,25 @@ namespace xcrack
     // from a point to an ellipse, an ellipsoid, or a hyperellipsoid" (2013).
     const bool   swap = (b > a);
     const double e0 = swap ? b : a, e1 = swap ? a : b;
-    const double y0 = std::abs(swap ? py : px), y1 = std::abs(swap ? px : py);
-    double       x0, x1;
+    // Coordinates within round-off of an axis are on it (the root s below
+    // tends to -1 near the centre, and s + 1 rounds to 0: a vertex at the
+    // centre of a penny once gave lst = -inf).
+    const double tiny = 1e-12 * e0;
+    double       y0 = std::abs(swap ? py : px), y1 = std::abs(swap ? px : py);
+    if (y0 < tiny)
+      y0 = 0;
+    if (y1 < tiny)
+      y1 = 0;
+    double x0, x1;
 
-    if (y1 > 0)
+    if (e0 == e1)
+      {
+        // A circle: the radial projection, accurate down to the centre.
+        const double r = std::hypot(y0, y1);
+        x0             = (r > 0 ? e0 * y0 / r : e0);
+        x1             = (r > 0 ? e0 * y1 / r : 0);
+      }
+    else if (y1 > 0)
       {
         if (y0 > 0)
           {
@@ -383,7 +398,12 @@ namespace xcrack
                       break;
                   }
                 x0 = r0 * y0 / (s + r0);
-                x1 = y1 / (s + 1);
+                // Near the centre s + 1 is small and y1 / (s + 1) loses the
+                // digits that the ellipse's equation keeps.
+                x1 =
+                  (s + 1 > 0.5 ?
+                     y1 / (s + 1) :
+                     e1 * std::sqrt(std::max(0., 1 - (x0 / e0) * (x0 / e0))));
               }
             else
               {
@@ -399,6 +419,8 @@ namespace xcrack
       }
     else
       {
+        // On the major axis: the closest point is off the axis only inside
+        // the evolute (never for a circle, where denom0 = 0).
         const double numer0 = e0 * y0, denom0 = e0 * e0 - e1 * e1;
         if (numer0 < denom0)
           {

@@ -5,6 +5,7 @@
 
 #include <xcrack/crack/level_set_fields.h>
 
+#include <cmath>
 #include <limits>
 
 namespace xcrack
@@ -59,6 +60,13 @@ namespace xcrack
                                      return shape.lst(p);
                                    }),
                                  owned[shapes.size() + c]);
+        // A shape's level sets are finite everywhere; anything else is a
+        // bug in the shape, which would show as cracks where there are none.
+        AssertThrow(std::isfinite(owned[c].l2_norm()) &&
+                      std::isfinite(owned[shapes.size() + c].l2_norm()),
+                    ExcMessage("The level sets of crack " +
+                               std::to_string(c + 1) +
+                               " are not finite at some vertex."));
       }
     set_all(owned);
   }
