@@ -12,8 +12,9 @@ CSV files as front.png.
 """
 import argparse
 import csv
-import glob
 import os
+
+from xcrack_runs import run_files
 
 
 def read(path):
@@ -27,7 +28,7 @@ def main():
     parser.add_argument("--all", action="store_true",
                         help="overlay every file, not only the last")
     args = parser.parse_args()
-    files = sorted(glob.glob(os.path.join(args.directory, "front_*.csv")))
+    files = run_files(args.directory, r"front_.*\.csv")
     if not files:
         raise SystemExit(f"no front_*.csv in {args.directory}: was "
                          "'Fracture parameters/Compute' on and is there a crack?")

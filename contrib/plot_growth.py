@@ -11,9 +11,10 @@ the last row of each step is its state) and front_<step>.csv.
 """
 import argparse
 import csv
-import glob
 import os
 import re
+
+from xcrack_runs import run_files
 
 
 def read(path):
@@ -34,7 +35,7 @@ def fronts(directory):
     """{step: rows of front_<step>.csv} for the steps with one mesh, and the
     last mesh of a step solved on several."""
     result = {}
-    for path in sorted(glob.glob(os.path.join(directory, "front_*.csv"))):
+    for path in run_files(directory, r"front_.*\.csv"):
         match = re.match(r"front_(\d+)(\.\d+)?\.csv$", os.path.basename(path))
         if match:
             result[int(match.group(1))] = read(path)

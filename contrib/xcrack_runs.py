@@ -1,8 +1,10 @@
 """Run the release xcrack on a parameter text and read its statistics.csv:
 the one helper the study and benchmark scripts in contrib/ share."""
 import csv
+import json
 import os
 import subprocess
+import sys
 
 top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 xcrack = os.path.join(top, "build", "release", "xcrack")
@@ -33,3 +35,31 @@ def front_file(row, n_meshes):
     if n_meshes > 1:
         key += f".{int(row['mesh']):02d}"
     return f"front_{key}.csv"
+
+
+def run_record(directory):
+    """The run record (run.json) of an output directory. Warns on stderr when
+    the run did not complete (killed, failed or still running): its files may
+    stop short. Returns None for a directory written before run records."""
+    path = os.path.join(directory, "run.json")
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        record = json.load(f)
+    if record["status"] != "completed":
+        print(f"warning: the run in {directory} is {record['status']}"
+              + (f" ({record['reason']})" if record.get("reason") else "")
+              + ": its results stop where it stopped.", file=sys.stderr)
+    return record
+
+
+def run_files(directory, regex):
+    """The files of the run in `directory` whose names match `regex`, sorted:
+    those its run record lists (never a stale file of an earlier run), or
+    every matching file for a directory without a record."""
+    import re
+    record = run_record(directory)
+    names = record["files"] if record else os.listdir(directory)
+    return sorted(os.path.join(directory, n) for n in names
+                  if re.fullmatch(regex, n)
+                  and os.path.exists(os.path.join(directory, n)))

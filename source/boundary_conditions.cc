@@ -1,8 +1,13 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/lac/vector.h>
 
 #include <xcrack/boundary_conditions.h>
 #include <xcrack/input_error.h>
 
+#include <cmath>
 #include <set>
 #include <sstream>
 
@@ -266,6 +271,113 @@ namespace xcrack
                     "Boundary conditions/Pinned points: (" + where.str() +
                       ") is not a vertex of the mesh.");
       }
+  }
+
+
+
+  template <int dim>
+  double
+  BoundaryConditions<dim>::check_finite(const Triangulation<dim> &triangulation,
+                                        const unsigned int        degree,
+                                        const double              size,
+                                        const double youngs_modulus) const
+  {
+    // The first place some data is not finite on this rank.
+    std::string culprit;
+    double dirichlet_max = 0, traction_max = 0, force_max = 0, pressure_max = 0;
+    Vector<double> value(dim);
+    const auto     look = [&](const Function<dim> &f,
+                          const Point<dim>    &x,
+                          const std::string   &entry,
+                          double              &largest,
+                          const ComponentMask &mask = ComponentMask()) {
+      f.vector_value(x, value);
+      for (unsigned int c = 0; c < f.n_components; ++c)
+        {
+          if (mask.size() > 0 && !mask[c])
+            continue;
+          if (!std::isfinite(value(c)))
+            {
+              if (culprit.empty())
+                {
+                  std::ostringstream message;
+                  message << entry << " is not finite at (" << x
+                          << "), where it is used: " << value(c) << ".";
+                  culprit = message.str();
+                }
+              return;
+            }
+          largest = std::max(largest, std::abs(value(c)));
+        }
+    };
+
+    const QGauss<dim - 1> face_rule(degree + 1);
+    const QGauss<dim>     cell_rule(degree + 1);
+    const MappingQ1<dim>  mapping;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          if (body_force)
+            for (const auto &q : cell_rule.get_points())
+              look(*body_force,
+                   mapping.transform_unit_to_real_cell(cell, q),
+                   "Boundary conditions/Body force",
+                   force_max);
+          if (lip_pressure)
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                const double p = lip_pressure->value(cell->vertex(v));
+                if (std::isfinite(p))
+                  pressure_max = std::max(pressure_max, std::abs(p));
+              }
+          for (const auto &face : cell->face_iterators())
+            {
+              if (!face->at_boundary())
+                continue;
+              std::vector<Point<dim>> points;
+              for (const unsigned int v : face->vertex_indices())
+                points.push_back(face->vertex(v));
+              for (const auto &q : face_rule.get_points())
+                {
+                  Point<dim> x;
+                  for (const unsigned int v : face->vertex_indices())
+                    x += GeometryInfo<dim - 1>::d_linear_shape_function(q, v) *
+                         face->vertex(v);
+                  points.push_back(x);
+                }
+              const auto id = face->boundary_id();
+              const auto d  = dirichlet.find(id);
+              if (d != dirichlet.end())
+                for (const auto &x : points)
+                  look(*d->second,
+                       x,
+                       "Boundary conditions/Dirichlet (boundary " +
+                         std::to_string(id) + ")",
+                       dirichlet_max,
+                       dirichlet_mask.at(id));
+              const auto n = neumann.find(id);
+              if (n != neumann.end())
+                for (unsigned int i = face->n_vertices(); i < points.size();
+                     ++i)
+                  look(*n->second,
+                       points[i],
+                       "Boundary conditions/Neumann (boundary " +
+                         std::to_string(id) + ")",
+                       traction_max);
+            }
+        }
+
+    // Every rank stops with the first culprit any rank found.
+    const MPI_Comm comm = triangulation.get_communicator();
+    for (const std::string &message : Utilities::MPI::all_gather(comm, culprit))
+      check_input(message.empty(), message);
+    dirichlet_max = Utilities::MPI::max(dirichlet_max, comm);
+    traction_max  = Utilities::MPI::max(traction_max, comm);
+    force_max     = Utilities::MPI::max(force_max, comm);
+    pressure_max  = Utilities::MPI::max(pressure_max, comm);
+    return dirichlet_max +
+           (traction_max + pressure_max) * size / youngs_modulus +
+           force_max * size * size / youngs_modulus;
   }
 
 

@@ -8,7 +8,8 @@
  *   xcrack --print-parameters    every parameter with default and documentation
  *
  * Exit codes: 0 success, 1 bad input (message names the culprit), 2 failure
- * during the computation.
+ * during the computation (a file that cannot be written, the solver), 3 a
+ * numerical failure (a value that is not finite, a singular system).
  */
 
 #include <deal.II/base/mpi.h>
@@ -88,6 +89,22 @@ main(int argc, char *argv[])
       if (root)
         std::cerr << "xcrack: input error: " << e.what() << std::endl;
       return 1;
+    }
+  catch (const xcrack::NumericalError &e)
+    {
+      if (root)
+        std::cerr << "xcrack: numerical failure: " << e.what() << std::endl;
+      return 3;
+    }
+  catch (const std::bad_alloc &)
+    {
+      // Out of memory before the first solve (the Simulator reports those
+      // with their DoF count): the mesh or the input checks did not fit.
+      std::cerr << "xcrack: error: out of memory while building the mesh "
+                   "and checking the input: use a coarser mesh (Mesh/Initial "
+                   "global refinement) or more ranks."
+                << std::endl;
+      return 2;
     }
   catch (const std::exception &e)
     {

@@ -54,6 +54,13 @@ namespace xcrack
     check_input(youngs_modulus > 0,
                 "Material/Young's modulus = " +
                   Utilities::to_string(youngs_modulus) + ": must be positive.");
+    check_input(std::isnormal(youngs_modulus) && youngs_modulus > 1e-200 &&
+                  youngs_modulus < 1e200,
+                "Material/Young's modulus = " +
+                  Utilities::to_string(youngs_modulus) +
+                  ": out of the range of numbers the solver can work with "
+                  "(choose units in which it lies between 1e-200 and "
+                  "1e200).");
     check_input(poisson_ratio > -1 && poisson_ratio < 0.5,
                 "Material/Poisson's ratio = " +
                   Utilities::to_string(poisson_ratio) +

@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <xcrack/boundary_conditions.h>
 #include <xcrack/crack/crack_set.h>
 #include <xcrack/exact_solution.h>
@@ -8,7 +10,10 @@
 #include <xcrack/parameters.h>
 #include <xcrack/simulator.h>
 
+#include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <map>
 #include <sstream>
 
 namespace xcrack
@@ -135,15 +140,70 @@ namespace xcrack
 
 
 
+  namespace
+  {
+    /**
+     * ParameterHandler keeps the last of two `set` lines of one entry
+     * without a word; a repeated entry is most often an edit that missed
+     * the earlier line, so say which value wins (rank 0, on stderr).
+     */
+    void
+    warn_about_repeated_entries(const std::string &text,
+                                const std::string &filename)
+    {
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+        return;
+      std::vector<std::string>            path;
+      std::map<std::string, unsigned int> first_line;
+      std::istringstream                  in(text);
+      std::string                         line;
+      for (unsigned int number = 1; std::getline(in, line); ++number)
+        {
+          line = Utilities::trim(line.substr(0, line.find('#')));
+          if (line.rfind("subsection ", 0) == 0)
+            path.push_back(Utilities::trim(line.substr(11)));
+          else if (line == "end" && !path.empty())
+            path.pop_back();
+          else if (line.rfind("set ", 0) == 0)
+            {
+              const std::string::size_type equal = line.find('=');
+              std::string                  key;
+              for (const std::string &section : path)
+                key += section + "/";
+              key += Utilities::trim(line.substr(4, equal - 4));
+              const auto [it, inserted] = first_line.emplace(key, number);
+              if (!inserted)
+                std::cerr << "Warning: " << filename << ": " << key
+                          << " is set on lines " << it->second << " and "
+                          << number << "; the value on line " << number
+                          << " is used." << std::endl;
+            }
+        }
+    }
+  } // namespace
+
+
+
   void
   read_parameter_file(ParameterHandler &prm, const std::string &filename)
   {
+    check_input(!std::filesystem::is_directory(filename),
+                "The parameter file '" + filename +
+                  "' is a directory (to continue a run from its checkpoint: "
+                  "xcrack --resume DIRECTORY).");
     std::ifstream in(filename);
     check_input(static_cast<bool>(in),
                 "Cannot open the parameter file '" + filename + "'.");
+    const std::string text((std::istreambuf_iterator<char>(in)),
+                           std::istreambuf_iterator<char>());
+    check_input(text.find("set ") != std::string::npos,
+                "The parameter file '" + filename +
+                  "' sets no entry (it is empty or holds only comments).");
+    warn_about_repeated_entries(text, filename);
     try
       {
-        prm.parse_input(in, filename);
+        std::istringstream stream(text);
+        prm.parse_input(stream, filename);
       }
     catch (const std::exception &e)
       {

@@ -36,8 +36,10 @@ namespace xcrack
     check_input(parts.size() == n || (extra_allowed && parts.size() > n),
                 entry + " = '" + text + "': expected " + std::to_string(n) +
                   " comma-separated numbers.");
+    // Extra components (a 3D default read in 2D) are dropped, but they must
+    // still be numbers: '-2, 0, abc' is a typo, not a 2D point.
     std::vector<double> values;
-    for (unsigned int i = 0; i < n; ++i)
+    for (unsigned int i = 0; i < parts.size(); ++i)
       try
         {
           values.push_back(Utilities::string_to_double(parts[i]));
@@ -47,6 +49,7 @@ namespace xcrack
           throw InputError(entry + " = '" + text + "': '" + parts[i] +
                            "' is not a number.");
         }
+    values.resize(n);
     return values;
   }
 

@@ -1,3 +1,5 @@
+#include <xcrack/input_error.h>
+#include <xcrack/output_file.h>
 #include <xcrack/statistics.h>
 
 #include <algorithm>
@@ -20,6 +22,10 @@ namespace xcrack
   void
   Statistics::add_value(const std::string &column, const double value)
   {
+    // The last guard before a number reaches a file that others trust.
+    if (!std::isfinite(value))
+      throw NumericalError(column + " is not finite (" + std::to_string(value) +
+                           "); the run stops rather than write it.");
     if (rows.empty())
       start_row();
     if (std::find(columns.begin(), columns.end(), column) == columns.end())
@@ -62,25 +68,26 @@ namespace xcrack
   void
   Statistics::write_csv(const std::string &filename) const
   {
-    std::ofstream out(filename);
-    for (unsigned int c = 0; c < columns.size(); ++c)
-      out << (c == 0 ? "" : ",") << columns[c];
-    out << '\n';
-    for (const auto &row : rows)
-      {
-        for (unsigned int c = 0; c < columns.size(); ++c)
-          {
-            if (c > 0)
-              out << ',';
-            const auto it = row.find(columns[c]);
-            if (it == row.end())
-              continue;
-            if (it->second.is_integer)
-              out << static_cast<long long>(it->second.value);
-            else
-              out << std::setprecision(10) << it->second.value;
-          }
-        out << '\n';
-      }
+    write_file(filename, [this](std::ostream &out) {
+      for (unsigned int c = 0; c < columns.size(); ++c)
+        out << (c == 0 ? "" : ",") << columns[c];
+      out << '\n';
+      for (const auto &row : rows)
+        {
+          for (unsigned int c = 0; c < columns.size(); ++c)
+            {
+              if (c > 0)
+                out << ',';
+              const auto it = row.find(columns[c]);
+              if (it == row.end())
+                continue;
+              if (it->second.is_integer)
+                out << static_cast<long long>(it->second.value);
+              else
+                out << std::setprecision(10) << it->second.value;
+            }
+          out << '\n';
+        }
+    });
   }
 } // namespace xcrack

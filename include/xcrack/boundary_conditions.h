@@ -59,6 +59,26 @@ namespace xcrack
     void
     check_against(const Triangulation<dim> &triangulation) const;
 
+    /**
+     * Evaluate the data where the assembly will use it on @p triangulation
+     * (the Dirichlet data at the vertices of its faces, the Dirichlet and
+     * Neumann data at the Gauss points, @p degree + 1 per direction, of
+     * the faces of their boundaries, the body force at the Gauss points of
+     * the cells) and throw an InputError naming the first entry and point
+     * where a value is not finite (collective). Returns the displacement the
+     * loads can produce at most, in order of magnitude, on a body of
+     * diameter @p size and Young's modulus @p youngs_modulus: max |g| +
+     * (max |t| + max |p|) size / E + max |f| size^2 / E (g Dirichlet data,
+     * t tractions, p the lip pressure at the vertices where it is finite,
+     * f the body force). The Simulator compares the solution with it: a
+     * displacement a million times larger comes from a singular system.
+     */
+    double
+    check_finite(const Triangulation<dim> &triangulation,
+                 const unsigned int        degree,
+                 const double              size,
+                 const double              youngs_modulus) const;
+
     std::map<types::boundary_id, std::shared_ptr<Function<dim>>> dirichlet;
     std::map<types::boundary_id, ComponentMask>                  dirichlet_mask;
     std::map<types::boundary_id, std::unique_ptr<Function<dim>>> neumann;

@@ -23,6 +23,18 @@ namespace xcrack
   };
 
   /**
+   * A computation that produced what no answer can be: a value that is not
+   * finite, or a system that is singular (rigid-body motions left free).
+   * The run stops with exit status 3 and a message that names the likely
+   * cause, rather than writing numbers an engineer would trust.
+   */
+  class NumericalError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
+  /**
    * Throw an InputError with @p message unless @p condition holds. Unlike
    * deal.II's AssertThrow this is meant for user input: the message is shown
    * as is, without file names and line numbers of our sources.

@@ -28,6 +28,7 @@
 #include <xcrack/mesh_refinement/interface.h>
 #include <xcrack/parameters.h>
 #include <xcrack/propagation.h>
+#include <xcrack/run_record.h>
 #include <xcrack/statistics.h>
 #include <xcrack/termination_criteria/interface.h>
 #include <xcrack/xfem/enrichment.h>
@@ -89,7 +90,8 @@ namespace xcrack
               const MPI_Comm     mpi_communicator = MPI_COMM_WORLD,
               const std::string &resume_directory = "");
 
-    /// Solve on the sequence of meshes and steps and write all results.
+    /// Solve on the sequence of meshes and steps and write all results,
+    /// with their record run.json.
     void
     run();
 
@@ -99,6 +101,10 @@ namespace xcrack
 
   private:
     friend class SimulatorAccess<dim>;
+
+    /// The loop of run(): the steps and their meshes (core.cc).
+    void
+    run_steps();
 
     /// @name Set-up (setup.cc)
     /// @{
@@ -230,6 +236,10 @@ namespace xcrack
     void
     write_front_file(const std::string &key) const;
 
+    /// The table of write_front_file() into @p csv.
+    void
+    write_front_table(std::ostream &csv) const;
+
     /// VTU files of the solution and of the cracks (output.cc).
     void
     output_results(const std::string &key);
@@ -320,6 +330,15 @@ namespace xcrack
     /// and, in a growth run, their moves: the state of the current step.
     std::vector<FrontValues<dim>> front_values;
     std::vector<FrontMove<dim>>   front_moves;
+
+    /// How far the loads can move the body, in order of magnitude
+    /// (BoundaryConditions::check_finite()).
+    double displacement_scale = 0;
+
+    /// run.json (created by run()).
+    std::unique_ptr<RunRecord> run_record;
+    /// Why the run ended (a termination criterion), for run.json.
+    std::string end_reason;
 
     /// The checkpoint to continue from (empty: a new run).
     std::string resume_directory;

@@ -8,6 +8,7 @@
 #include <xcrack/input_error.h>
 #include <xcrack/parsed_function.h>
 
+#include <algorithm>
 #include <limits>
 #include <sstream>
 
@@ -284,6 +285,29 @@ namespace xcrack
                           name + ": the tip at (" + where.str() +
                             ") lies outside the body. If this end is a "
                             "mouth on the boundary, say so with 'Tips'.");
+              // A tip on the boundary is not a tip: the crack opens there
+              // (and a crown around it would leave the body).
+              bool on_boundary = false;
+              for (const auto &cell : mesh.active_cell_iterators())
+                if (cell->is_locally_owned() && cell->at_boundary())
+                  for (const auto &face : cell->face_iterators())
+                    if (face->at_boundary())
+                      {
+                        const Point<dim>     a = face->vertex(0);
+                        const Tensor<1, dim> e = face->vertex(1) - a;
+                        const double         w =
+                          std::clamp((tip.position - a) * e / e.norm_square(),
+                                     0.,
+                                     1.);
+                        on_boundary =
+                          on_boundary || tip.position.distance(a + w * e) <=
+                                           1e-8 * cell->diameter();
+                      }
+              check_input(!Utilities::MPI::logical_or(on_boundary, comm),
+                          name + ": the tip at (" + where.str() +
+                            ") lies on the boundary of the body, where the "
+                            "crack opens: that end is a mouth, say so with "
+                            "'Tips'.");
             }
       }
   }

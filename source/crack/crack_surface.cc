@@ -6,6 +6,7 @@
 #include <deal.II/fe/mapping_q1.h>
 
 #include <xcrack/crack/crack_surface.h>
+#include <xcrack/output_file.h>
 #include <xcrack/xfem/cell_quadrature.h>
 
 #include <algorithm>
@@ -561,53 +562,54 @@ namespace xcrack
         kinds.push_back(1);
       }
 
-    std::ofstream out(file_name);
-    out << std::setprecision(10);
-    out << "<?xml version=\"1.0\"?>\n"
-        << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
-        << "<UnstructuredGrid>\n"
-        << "<Piece NumberOfPoints=\"" << points.size() << "\" NumberOfCells=\""
-        << cells.size() << "\">\n"
-        << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
-           "format=\"ascii\">\n";
-    for (const auto &p : points)
-      out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-    out
-      << "</DataArray>\n</Points>\n<Cells>\n"
-      << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-    for (const auto &c : cells)
-      {
-        for (const unsigned int i : c)
-          out << i << ' ';
-        out << '\n';
-      }
-    out << "</DataArray>\n"
-        << "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-    unsigned int offset = 0;
-    for (const auto &c : cells)
-      out << (offset += c.size()) << '\n';
-    out << "</DataArray>\n"
-        << "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-    for (const unsigned int t : types)
-      out << t << '\n';
-    out << "</DataArray>\n</Cells>\n"
-        << "<PointData Vectors=\"opening\">\n"
-        << "<DataArray type=\"Float64\" Name=\"opening\" "
-           "NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (const auto &o : opening)
-      out << o[0] << ' ' << o[1] << ' ' << o[2] << '\n';
-    out << "</DataArray>\n"
-        << "<DataArray type=\"Float64\" Name=\"front_abscissa\" "
-           "format=\"ascii\">\n";
-    for (const double s : abscissa)
-      out << s << '\n';
-    out << "</DataArray>\n</PointData>\n"
-        << "<CellData Scalars=\"kind\">\n"
-        << "<DataArray type=\"UInt8\" Name=\"kind\" format=\"ascii\">\n";
-    for (const unsigned int k : kinds)
-      out << k << '\n';
-    out << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n"
-        << "</VTKFile>\n";
+    write_file(file_name, [&](std::ostream &out) {
+      out << std::setprecision(10);
+      out << "<?xml version=\"1.0\"?>\n"
+          << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
+          << "<UnstructuredGrid>\n"
+          << "<Piece NumberOfPoints=\"" << points.size()
+          << "\" NumberOfCells=\"" << cells.size() << "\">\n"
+          << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+             "format=\"ascii\">\n";
+      for (const auto &p : points)
+        out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+      out
+        << "</DataArray>\n</Points>\n<Cells>\n"
+        << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+      for (const auto &c : cells)
+        {
+          for (const unsigned int i : c)
+            out << i << ' ';
+          out << '\n';
+        }
+      out << "</DataArray>\n"
+          << "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+      unsigned int offset = 0;
+      for (const auto &c : cells)
+        out << (offset += c.size()) << '\n';
+      out << "</DataArray>\n"
+          << "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+      for (const unsigned int t : types)
+        out << t << '\n';
+      out << "</DataArray>\n</Cells>\n"
+          << "<PointData Vectors=\"opening\">\n"
+          << "<DataArray type=\"Float64\" Name=\"opening\" "
+             "NumberOfComponents=\"3\" format=\"ascii\">\n";
+      for (const auto &o : opening)
+        out << o[0] << ' ' << o[1] << ' ' << o[2] << '\n';
+      out << "</DataArray>\n"
+          << "<DataArray type=\"Float64\" Name=\"front_abscissa\" "
+             "format=\"ascii\">\n";
+      for (const double s : abscissa)
+        out << s << '\n';
+      out << "</DataArray>\n</PointData>\n"
+          << "<CellData Scalars=\"kind\">\n"
+          << "<DataArray type=\"UInt8\" Name=\"kind\" format=\"ascii\">\n";
+      for (const unsigned int k : kinds)
+        out << k << '\n';
+      out << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n"
+          << "</VTKFile>\n";
+    });
   }
 
 

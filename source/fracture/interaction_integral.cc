@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace xcrack
 {
@@ -535,6 +536,10 @@ namespace xcrack
 
         // Other fronts or tips inside the crown.
         bool clear = true;
+        // Whether the crown holds a vertex of the mesh at all (with crowns
+        // smaller than the cells, q vanishes at every vertex, and so do K
+        // and G).
+        bool sees_crown = false;
         for (unsigned int g = 0; g < fronts.size(); ++g)
           if (g != f)
             for (const auto &other : fronts[g])
@@ -629,6 +634,7 @@ namespace xcrack
               }
             if (q_max == 0)
               continue;
+            sees_crown = true;
             // Free surfaces: theta tangent to the boundary faces of the
             // cell at their vertices (Gram-Schmidt over their normals).
             if constexpr (dim == 3)
@@ -860,6 +866,17 @@ namespace xcrack
                             comm,
                             ArrayView<double>(b_all));
         clear = !Utilities::MPI::logical_or(!clear, comm);
+        if (!Utilities::MPI::logical_or(sees_crown, comm))
+          {
+            std::ostringstream message;
+            message << "Fracture parameters/Crown radii: the crown of "
+                    << (dim == 2 ? "tip " : "front ") << f + 1 << " at ("
+                    << fronts[f][0].position << ") (r_sup = " << r_sup
+                    << ") holds no vertex of the mesh, so K and G would be 0 "
+                       "there; use radii of at least a cell there, or Crown "
+                       "unit = cells.";
+            throw InputError(message.str());
+          }
         std::vector<std::vector<double>> nodal(n_integrals);
         for (unsigned int m = 0; m < n_integrals; ++m)
           {

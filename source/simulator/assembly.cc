@@ -1,8 +1,12 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/hp/fe_values.h>
 
+#include <xcrack/input_error.h>
 #include <xcrack/simulator.h>
 #include <xcrack/xfem/cell_quadrature.h>
+
+#include <cmath>
+#include <sstream>
 
 namespace xcrack
 {
@@ -59,6 +63,22 @@ namespace xcrack
     std::vector<double>                  div;
     std::vector<Vector<double>>          load;
     std::unique_ptr<FEValues<dim>>       special_values;
+    // The first load that is not finite where it is used, on this rank.
+    std::string culprit;
+    const auto  check = [&culprit](const std::vector<Vector<double>> &values,
+                                  const std::vector<Point<dim>>     &points,
+                                  const std::string                 &entry) {
+      for (unsigned int q = 0; q < values.size() && culprit.empty(); ++q)
+        for (const double v : values[q])
+          if (!std::isfinite(v))
+            {
+              std::ostringstream message;
+              message << entry << " is not finite at (" << points[q]
+                      << "), where it is used: " << v << ".";
+              culprit = message.str();
+              break;
+            }
+    };
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -76,6 +96,9 @@ namespace xcrack
               load.resize(fe_values.n_quadrature_points, Vector<double>(dim));
               boundary_conditions.body_force->vector_value_list(
                 fe_values.get_quadrature_points(), load);
+              check(load,
+                    fe_values.get_quadrature_points(),
+                    "Boundary conditions/Body force");
             }
 
           for (const unsigned int q : fe_values.quadrature_point_indices())
@@ -119,6 +142,10 @@ namespace xcrack
                             Vector<double>(dim));
                 it->second->vector_value_list(
                   fe_face_values.get_quadrature_points(), load);
+                check(load,
+                      fe_face_values.get_quadrature_points(),
+                      "Boundary conditions/Neumann (boundary " +
+                        std::to_string(face->boundary_id()) + ")");
                 for (const unsigned int q :
                      fe_face_values.quadrature_point_indices())
                   for (unsigned int i = 0; i < n_dofs; ++i)
@@ -131,7 +158,24 @@ namespace xcrack
               }
 
           if (boundary_conditions.lip_pressure)
-            add_lip_pressure(cell, cell_rhs);
+            {
+              add_lip_pressure(cell, cell_rhs);
+              for (const double v : cell_rhs)
+                if (!std::isfinite(v) && culprit.empty())
+                  {
+                    std::ostringstream message;
+                    message << "Boundary conditions/Lip pressure is not "
+                               "finite on the lips in the cell at ("
+                            << cell->center() << ").";
+                    culprit = message.str();
+                  }
+            }
+
+          // A load that is not finite is reported after the loop (every
+          // rank must reach the collective check); until then it must not
+          // reach the global vector.
+          if (!culprit.empty())
+            cell_rhs = 0;
 
           local_dof_indices.resize(n_dofs);
           cell->get_dof_indices(local_dof_indices);
@@ -141,6 +185,11 @@ namespace xcrack
                                                  system_matrix,
                                                  system_rhs);
         }
+
+    // Every rank stops with the first culprit any rank found.
+    for (const std::string &message :
+         Utilities::MPI::all_gather(mpi_communicator, culprit))
+      check_input(message.empty(), message);
 
     system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);

@@ -6,10 +6,13 @@
 #include <xcrack/condition_number.h>
 #include <xcrack/exact_solution.h>
 #include <xcrack/input_error.h>
+#include <xcrack/output_file.h>
 #include <xcrack/simulator.h>
 
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace xcrack
@@ -108,12 +111,78 @@ namespace xcrack
     mesh_description.create(triangulation, resume_directory.empty());
     boundary_conditions.check_against(triangulation);
     cracks.check_against(triangulation);
+    // Refinement capped at the initial level repeats one mesh: a study of
+    // several meshes would print rates of 0/0.
+    if (resume_directory.empty() && refinement_parameters.n_meshes > 1)
+      check_input(triangulation.n_global_levels() - 1 <
+                    refinement_parameters.max_level,
+                  "Mesh refinement/Maximum level = " +
+                    std::to_string(refinement_parameters.max_level) +
+                    ": the initial mesh already reaches level " +
+                    std::to_string(triangulation.n_global_levels() - 1) +
+                    ", so the " +
+                    std::to_string(refinement_parameters.n_meshes) +
+                    " meshes (Number of meshes) would all be the same.");
+    check_input(refinement_parameters.min_level <=
+                  refinement_parameters.max_level,
+                "Mesh refinement/Minimum level = " +
+                  std::to_string(refinement_parameters.min_level) +
+                  " is above Maximum level = " +
+                  std::to_string(refinement_parameters.max_level) + ".");
+    // The data must be finite where it is used; how far it can move the
+    // body tells a singular system by the size of its solution.
+    {
+      double lower = std::numeric_limits<double>::max(), upper = -lower;
+      std::vector<double> low(dim, lower), high(dim, upper);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int v : cell->vertex_indices())
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                low[d]  = std::min(low[d], cell->vertex(v)[d]);
+                high[d] = std::max(high[d], cell->vertex(v)[d]);
+              }
+      double size = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        size = std::max(size,
+                        Utilities::MPI::max(high[d], mpi_communicator) -
+                          Utilities::MPI::min(low[d], mpi_communicator));
+      displacement_scale = boundary_conditions.check_finite(
+        triangulation, degree, size, material.youngs_modulus);
+    }
     check_input(!boundary_conditions.dirichlet.empty() ||
                   !boundary_conditions.pinned.empty(),
                 "Boundary conditions/Dirichlet and Pinned points are empty: "
                 "without any prescribed displacement the rigid body motions "
                 "are free and the problem has no unique solution.");
 
+    // Each crack must be one the mesh sees: its level-set fields must cut
+    // some cell along the crack (a crack inside a cell, whose lst is
+    // positive at every vertex, or one along cell faces, is not there for
+    // the enrichment, and its K would be meaningless).
+    if (cracks.size() > 0)
+      {
+        level_sets.initialize(cracks.shapes());
+        for (unsigned int c = 0; c < cracks.size(); ++c)
+          {
+            CrackSurface<dim> surface;
+            surface.extract(level_sets, c);
+            double h = 0;
+            for (const auto &cell : triangulation.active_cell_iterators())
+              if (cell->is_locally_owned())
+                h = std::max(h, cell->diameter());
+            h = Utilities::MPI::max(h, mpi_communicator);
+            std::ostringstream message;
+            message << "Cracks/Crack " << c + 1
+                    << ": the mesh does not see this crack (no cell is cut "
+                       "along it: it lies inside one cell or along cell "
+                       "faces; the cells are up to "
+                    << h
+                    << " across). Refine the mesh there (Mesh/Initial global "
+                       "refinement) or move the crack off the faces.";
+            check_input(surface.measure() > 0, message.str());
+          }
+      }
     check_input(!boundary_conditions.lip_pressure || cracks.size() > 0,
                 "Boundary conditions/Lip pressure is set but there is no "
                 "crack (Cracks/Number of cracks = 0).");
@@ -151,12 +220,25 @@ namespace xcrack
     face_quadrature_collection.push_back(QGauss<dim - 1>(degree + 1));
 
     // The output directory must be usable: this is the last check before
-    // any result is written.
+    // any result is written (creating it and a probe file touches no
+    // earlier result).
     const std::filesystem::path dir(run_parameters.output_directory);
     check_input(!std::filesystem::exists(dir) ||
                   std::filesystem::is_directory(dir),
                 "Output directory = " + run_parameters.output_directory +
                   ": exists and is not a directory.");
+    unsigned int writable = 1;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        std::error_code error;
+        std::filesystem::create_directories(dir, error);
+        const std::filesystem::path probe = dir / ".xcrack-probe";
+        writable = (!error && std::ofstream(probe).good());
+        std::filesystem::remove(probe, error);
+      }
+    check_input(Utilities::MPI::min(writable, mpi_communicator) == 1,
+                "Output directory = " + run_parameters.output_directory +
+                  ": cannot create it or write into it (permissions?).");
   }
 
 
@@ -182,9 +264,52 @@ namespace xcrack
                                           TimerOutput::wall_times);
     start_time = std::chrono::steady_clock::now();
     std::filesystem::create_directories(run_parameters.output_directory);
+    run_record = std::make_unique<RunRecord>(run_parameters.output_directory,
+                                             mpi_communicator);
+    run_record->start(!resume_directory.empty());
+    try
+      {
+        run_steps();
+      }
+    catch (const std::bad_alloc &)
+      {
+        // Say how big the problem was when memory ran out.
+        const std::string message =
+          "out of memory with " + std::to_string(dof_handler.n_dofs()) +
+          " DoFs (" +
+          std::to_string(
+            system_matrix.m() > 0 ? system_matrix.n_nonzero_elements() : 0) +
+          " matrix entries). A direct solver's factors need far more than "
+          "the matrix: use Linear solver/Type = cg amg, fewer meshes or a "
+          "lower Mesh refinement/Maximum level.";
+        run_record->finish("failed", message);
+        timer.reset();
+        throw std::runtime_error(message);
+      }
+    catch (const std::exception &e)
+      {
+        // The files written so far stay; run.json says they are a failed
+        // run's. The timer goes here, where no exception is in flight (its
+        // destructor would warn about one).
+        run_record->finish("failed", message_of(e));
+        timer.reset();
+        throw;
+      }
+    run_record->finish("completed", end_reason);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::run_steps()
+  {
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      prm.print_parameters(run_parameters.output_directory + "/parameters.prm",
-                           ParameterHandler::ShortPRM);
+      write_file(run_parameters.output_directory + "/parameters.prm",
+                 [&](std::ostream &out) {
+                   prm.print_parameters(out, ParameterHandler::ShortPRM);
+                 });
+    run_record->add_file("parameters.prm");
 
     pcout << "xcrack: " << dim << "D linear elasticity, Q" << degree
           << " elements, " << linear_solver.type << " solver" << std::endl;
@@ -293,6 +418,27 @@ namespace xcrack
     // The largest displacement component: a first sanity check of any run
     // (and what the demo compares with beam theory).
     const double max_displacement = compute_max_displacement();
+    // A singular system (rigid-body motions left free) solved by the
+    // direct solver gives a displacement of round-off divided by a zero
+    // pivot: not finite, or far beyond what the loads can produce.
+    if (!std::isfinite(max_displacement))
+      throw NumericalError(
+        "the displacement of step " + std::to_string(step) +
+        " is not finite (NaN or inf): the system is singular, or data that "
+        "is not finite reached it.");
+    if (displacement_scale > 0 && max_displacement > 1e6 * displacement_scale)
+      {
+        std::ostringstream message;
+        message << "the displacement of step " << step << " reaches "
+                << max_displacement << ", " << std::scientific
+                << std::setprecision(1) << max_displacement / displacement_scale
+                << " times what the loads can produce: the system is "
+                   "singular. Rigid-body motions are left free: the "
+                   "Dirichlet data and pinned points must hold every part "
+                   "of the body in every direction, and a crack that cuts a "
+                   "piece loose frees that piece.";
+        throw NumericalError(message.str());
+      }
     statistics.add_value("max_displacement", max_displacement);
     line << std::scientific << std::setprecision(4) << ", max |u_i| "
          << max_displacement << std::defaultfloat;
@@ -350,6 +496,7 @@ namespace xcrack
       }
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       statistics.write_csv(run_parameters.output_directory + "/statistics.csv");
+    run_record->add_file("statistics.csv");
   }
 
 

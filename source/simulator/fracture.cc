@@ -2,6 +2,7 @@
 
 #include <xcrack/fracture/displacement_jump.h>
 #include <xcrack/fracture/interaction_integral.h>
+#include <xcrack/output_file.h>
 #include <xcrack/simulator.h>
 
 #include <cmath>
@@ -176,7 +177,8 @@ namespace xcrack
         }
     // Errors against the reference: relative to |K| where it does not
     // vanish (2D), or (3D) to the largest |K| of that mode along the front
-    // (K_II and K_III vary in sign along a front under shear).
+    // (K_II and K_III vary in sign along a front under shear); absolute
+    // where the reference is zero altogether.
     if (reference_function)
       {
         double error[3] = {0, 0, 0};
@@ -196,6 +198,9 @@ namespace xcrack
                               1e-12 * reference[i].l2_norm() ?
                             std::abs(reference[i][m]) :
                             reference[i].l2_norm());
+                // A reference that vanishes altogether: the absolute error.
+                if (norm == 0)
+                  norm = 1;
                 error[m] =
                   std::max(error[m],
                            std::abs(k_of(values[i], m) - reference[i][m]) /
@@ -220,8 +225,17 @@ namespace xcrack
   void
   Simulator<dim>::write_front_file(const std::string &key) const
   {
-    std::ofstream csv(run_parameters.output_directory + "/front_" + key +
-                      ".csv");
+    write_file(run_parameters.output_directory + "/front_" + key + ".csv",
+               [&](std::ostream &csv) { write_front_table(csv); });
+    run_record->add_file("front_" + key + ".csv");
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_front_table(std::ostream &csv) const
+  {
     csv << "index,s,x,y,z,K_I,K_II,K_III,G,G_Irwin,r_inf,r_sup,"
            "K_I_jump,K_II_jump,K_III_jump,front";
     // The moves of a growth step: equivalent K, its range, the rate, the

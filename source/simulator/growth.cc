@@ -118,8 +118,11 @@ namespace xcrack
           break;
         }
     if (verdict.stop)
-      pcout << (verdict.failure ? "Failure: " : "End: ") << verdict.reason
-            << "." << std::endl;
+      {
+        end_reason =
+          (verdict.failure ? "Failure: " : "End: ") + verdict.reason + ".";
+        pcout << end_reason << std::endl;
+      }
     return verdict.stop;
   }
 
@@ -141,6 +144,7 @@ namespace xcrack
     {
       TimerOutput::Scope t(*timer, "checkpoint");
       write_checkpoint();
+      run_record->add_file("checkpoint");
       // Continue from the mesh just written, as a resumed run does: the
       // order of its cells (and so the numbering of the DoFs and the order
       // of the sums of assembly) is that of a loaded mesh, which differs

@@ -1,6 +1,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <xcrack/output.h>
+#include <xcrack/output_file.h>
 #include <xcrack/simulator.h>
 
 #include <fstream>
@@ -69,11 +70,14 @@ namespace xcrack
             (cracks.size() > 1 ? std::to_string(c + 1) : std::string()) + "-" +
             key + ".vtu";
           crack_surfaces[c].write_vtu(dir + name, dof_handler, solution);
+          run_record->add_file(name);
           if (c == 0 && Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
             {
               crack_records.emplace_back(statistics.n_rows() - 1, name);
-              std::ofstream pvd(dir + "crack.pvd");
-              DataOutBase::write_pvd_record(pvd, crack_records);
+              write_file(dir + "crack.pvd", [&](std::ostream &pvd) {
+                DataOutBase::write_pvd_record(pvd, crack_records);
+              });
+              run_record->add_file("crack.pvd");
             }
         }
 
@@ -82,24 +86,27 @@ namespace xcrack
       Utilities::MPI::this_mpi_process(mpi_communicator);
     const unsigned int n_ranks =
       Utilities::MPI::n_mpi_processes(mpi_communicator);
-    {
-      std::ofstream out(dir + base + "." + Utilities::int_to_string(rank, 4) +
-                        ".vtu");
-      data_out.write_vtu(out);
-    }
+    write_file(dir + base + "." + Utilities::int_to_string(rank, 4) + ".vtu",
+               [&](std::ostream &out) { data_out.write_vtu(out); });
     if (rank == 0)
       {
         std::vector<std::string> pieces;
         for (unsigned int r = 0; r < n_ranks; ++r)
           pieces.push_back(base + "." + Utilities::int_to_string(r, 4) +
                            ".vtu");
-        std::ofstream pvtu(dir + base + ".pvtu");
-        data_out.write_pvtu_record(pvtu, pieces);
+        write_file(dir + base + ".pvtu", [&](std::ostream &pvtu) {
+          data_out.write_pvtu_record(pvtu, pieces);
+        });
         // The time of a record: the index of the solve (the row of
         // statistics.csv), which increases over meshes and steps alike.
         pvd_records.emplace_back(statistics.n_rows() - 1, base + ".pvtu");
-        std::ofstream pvd(dir + "solution.pvd");
-        DataOutBase::write_pvd_record(pvd, pvd_records);
+        write_file(dir + "solution.pvd", [&](std::ostream &pvd) {
+          DataOutBase::write_pvd_record(pvd, pvd_records);
+        });
+        for (const std::string &piece : pieces)
+          run_record->add_file(piece);
+        run_record->add_file(base + ".pvtu");
+        run_record->add_file("solution.pvd");
       }
   }
 

@@ -1,0 +1,148 @@
+#include <xcrack/output_file.h>
+#include <xcrack/run_record.h>
+
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <regex>
+#include <sstream>
+
+#ifndef XCRACK_VERSION
+#  define XCRACK_VERSION "unknown"
+#endif
+
+namespace xcrack
+{
+  namespace
+  {
+    /// The time now, in ISO 8601 (UTC).
+    std::string
+    now()
+    {
+      const std::time_t t =
+        std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+      std::ostringstream s;
+      s << std::put_time(std::gmtime(&t), "%Y-%m-%dT%H:%M:%SZ");
+      return s.str();
+    }
+
+    /// @p text as a JSON string.
+    std::string
+    quoted(const std::string &text)
+    {
+      std::string result = "\"";
+      for (const char c : text)
+        {
+          if (c == '"' || c == '\\')
+            result += '\\';
+          if (c == '\n')
+            result += "\\n";
+          else if (static_cast<unsigned char>(c) >= 0x20)
+            result += c;
+        }
+      return result + "\"";
+    }
+
+    /// The command line of this process (Linux), arguments separated by
+    /// spaces.
+    std::string
+    command_line()
+    {
+      std::ifstream in("/proc/self/cmdline", std::ios::binary);
+      std::string   text((std::istreambuf_iterator<char>(in)),
+                       std::istreambuf_iterator<char>());
+      std::replace(text.begin(), text.end(), '\0', ' ');
+      while (!text.empty() && text.back() == ' ')
+        text.pop_back();
+      return text;
+    }
+  } // namespace
+
+
+
+  RunRecord::RunRecord(const std::string &directory,
+                       const MPI_Comm     communicator)
+    : directory(directory)
+    , root(Utilities::MPI::this_mpi_process(communicator) == 0)
+  {}
+
+
+
+  void
+  RunRecord::start(const bool resumed_run)
+  {
+    resumed      = resumed_run;
+    start_time   = now();
+    command_line = xcrack::command_line();
+    if (!root)
+      return;
+    if (!resumed)
+      {
+        // What an earlier run wrote and this one will write anew: files,
+        // and the checkpoint directories (nothing else of the user's).
+        const std::regex files(
+          "(front_.*\\.csv|crack[0-9]*-.*\\.vtu|crack\\.pvd|solution-.*\\.p?vtu|"
+          "solution\\.pvd|statistics\\.csv|growth_.*\\.png|front\\.png|"
+          "run\\.json|.*\\.tmp)");
+        const std::regex checkpoints("checkpoint(\\.tmp|\\.old)?");
+        for (const auto &entry : std::filesystem::directory_iterator(directory))
+          {
+            const std::string name = entry.path().filename().string();
+            if (entry.is_regular_file() && std::regex_match(name, files))
+              std::filesystem::remove(entry.path());
+            else if (entry.is_directory() &&
+                     std::regex_match(name, checkpoints))
+              std::filesystem::remove_all(entry.path());
+          }
+      }
+    write();
+  }
+
+
+
+  void
+  RunRecord::add_file(const std::string &name)
+  {
+    if (root && std::find(files.begin(), files.end(), name) == files.end())
+      {
+        files.push_back(name);
+        write();
+      }
+  }
+
+
+
+  void
+  RunRecord::finish(const std::string &final_status,
+                    const std::string &final_reason)
+  {
+    status   = final_status;
+    reason   = final_reason;
+    end_time = now();
+    if (root)
+      write();
+  }
+
+
+
+  void
+  RunRecord::write() const
+  {
+    write_file(directory + "/run.json", [this](std::ostream &out) {
+      out << "{\n  \"status\": " << quoted(status)
+          << ",\n  \"reason\": " << quoted(reason)
+          << ",\n  \"start\": " << quoted(start_time)
+          << ",\n  \"end\": " << quoted(end_time)
+          << ",\n  \"resumed\": " << (resumed ? "true" : "false")
+          << ",\n  \"version\": " << quoted(XCRACK_VERSION)
+          << ",\n  \"command\": " << quoted(command_line)
+          << ",\n  \"files\": [";
+      for (unsigned int i = 0; i < files.size(); ++i)
+        out << (i > 0 ? ", " : "") << quoted(files[i]);
+      out << "]\n}\n";
+    });
+  }
+} // namespace xcrack
