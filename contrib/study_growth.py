@@ -17,10 +17,10 @@ cycles): there K^2 is not linear in a and the cycles converge with the
 advance.
 
 `dcb`: prm/benchmarks/dcb_2d.prm (BENCHMARKS.md Case 11) for the three
-initial kinks, with Maximum advance 0.1 and 0.05 and, at 0.05, a mesh
-refined once more: the height of the path at x = 4.6, 5.0 and 5.4 (the
-ordering of the kinks, the convergence in advance and mesh) and the figure
-doc/figures/dcb_paths.png.
+initial kinks, with Maximum advance 0.1 and 0.05, at 0.05 a mesh refined
+once more, and on that mesh the advance 0.025: the height of the path at
+x = 4.6, 5.0 and 5.4 (the ordering of the kinks, the convergence in advance
+and mesh) and the figure doc/figures/dcb_paths.png.
 
 `cost`: the wall time of each phase of a step (solve, assembly, K, level-set
 update, refinement, checkpoint, output) on the 2D benchmark and on a coarse
@@ -133,7 +133,7 @@ def dcb(args):
     dcb_prm = os.path.join(top, "prm", "benchmarks", "dcb_2d.prm")
     variants = []
     for kink in ["1.43", "2.86", "5.71"]:
-        for advance, levels in [(0.1, 3), (0.05, 3), (0.05, 4)]:
+        for advance, levels in [(0.1, 3), (0.05, 3), (0.05, 4), (0.025, 4)]:
             variants.append((kink, advance, levels))
 
     def one(variant):
@@ -170,7 +170,7 @@ def dcb(args):
         return
     fig, ax = plt.subplots(figsize=(6.5, 3.5))
     colours = {"1.43": "C0", "2.86": "C1", "5.71": "C2"}
-    styles = {(0.1, 3): ":", (0.05, 3): "--", (0.05, 4): "-"}
+    styles = {(0.1, 3): ":", (0.05, 3): "--", (0.05, 4): "-", (0.025, 4): "-."}
     for variant, path in paths.items():
         kink, advance, levels = variant
         ax.plot([p[0] for p in path], [p[1] for p in path],

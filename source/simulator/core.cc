@@ -159,8 +159,9 @@ namespace xcrack
     // Each crack must be one the mesh sees: its level-set fields must cut
     // some cell along the crack (a crack inside a cell, whose lst is
     // positive at every vertex, or one along cell faces, is not there for
-    // the enrichment, and its K would be meaningless).
-    if (cracks.size() > 0)
+    // the enrichment, and its K would be meaningless). A resumed run's
+    // cracks are its checkpoint's fields, on a mesh loaded later.
+    if (cracks.size() > 0 && resume_directory.empty())
       {
         level_sets.initialize(cracks.shapes());
         for (unsigned int c = 0; c < cracks.size(); ++c)
