@@ -2,6 +2,8 @@
 #include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/fe/mapping_q1.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <xcrack/boundary_conditions.h>
@@ -378,6 +380,98 @@ namespace xcrack
     return dirichlet_max +
            (traction_max + pressure_max) * size / youngs_modulus +
            force_max * size * size / youngs_modulus;
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::check_rigid_body_motions(
+    const Triangulation<dim> &triangulation,
+    const double              size) const
+  {
+    // No support at all has its own message (in the Simulator).
+    if (dirichlet.empty() && pinned.empty())
+      return;
+    // The rigid-body motions: translations, then rotations about the
+    // origin, scaled by the body's size so that all are of unit order.
+    constexpr unsigned int n_modes = (dim == 2 ? 3 : 6);
+    const auto mode = [size](const Point<dim> &x, const unsigned int k) {
+      Tensor<1, dim> u;
+      if (k < dim)
+        u[k] = 1;
+      else if (dim == 2)
+        {
+          u[0] = -x[1] / size;
+          u[1] = x[0] / size;
+        }
+      else
+        {
+          // Rotations about z, x and y.
+          const unsigned int axis = (k - dim + 2) % 3, a = (axis + 1) % 3,
+                             b = (axis + 2) % 3;
+          u[a]                 = -x[b] / size;
+          u[b]                 = x[a] / size;
+        }
+      return u;
+    };
+    // Gram matrix of the held components: sum over held (vertex,
+    // component) of the modes' values there, outer product.
+    std::vector<double> gram(n_modes * n_modes, 0.);
+    const auto hold = [&](const Point<dim> &x, const ComponentMask &mask) {
+      for (unsigned int c = 0; c < dim; ++c)
+        if (mask.size() == 0 || mask[c])
+          for (unsigned int i = 0; i < n_modes; ++i)
+            for (unsigned int j = 0; j < n_modes; ++j)
+              gram[i * n_modes + j] += mode(x, i)[c] * mode(x, j)[c];
+    };
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && dirichlet.count(face->boundary_id()))
+            for (const unsigned int v : face->vertex_indices())
+              hold(face->vertex(v), dirichlet_mask.at(face->boundary_id()));
+    const MPI_Comm comm = triangulation.get_communicator();
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      for (const auto &[point, mask] : pinned)
+        hold(point, mask);
+    Utilities::MPI::sum(gram, comm, gram);
+
+    LAPACKFullMatrix<double> matrix(n_modes, n_modes);
+    for (unsigned int i = 0; i < n_modes; ++i)
+      for (unsigned int j = 0; j < n_modes; ++j)
+        matrix(i, j) = gram[i * n_modes + j];
+    Vector<double>     eigenvalues;
+    FullMatrix<double> modes;
+    matrix.compute_eigenvalues_symmetric(-1., 1e300, 0., eigenvalues, modes);
+    double largest = 0;
+    for (const double e : eigenvalues)
+      largest = std::max(largest, e);
+    std::vector<std::string> free;
+    const char              *name[6]  = {"x", "y", "z", "", "", ""};
+    const char              *about[3] = {"z", "x", "y"};
+    for (unsigned int k = 0; k < eigenvalues.size(); ++k)
+      if (eigenvalues(k) <= 1e-10 * largest)
+        {
+          // Name the motion by its largest part.
+          unsigned int biggest = 0;
+          for (unsigned int i = 1; i < n_modes; ++i)
+            if (std::abs(modes(i, k)) > std::abs(modes(biggest, k)))
+              biggest = i;
+          free.push_back(biggest < dim ?
+                           std::string("a translation along ") + name[biggest] :
+                           std::string("a rotation about ") +
+                             about[biggest - dim]);
+        }
+    std::string list;
+    for (unsigned int i = 0; i < free.size(); ++i)
+      list += (i == 0 ? "" : (i + 1 == free.size() ? " and " : ", ")) + free[i];
+    check_input(free.empty(),
+                "Boundary conditions: the Dirichlet data and Pinned points "
+                "leave the body free to move (" +
+                  list +
+                  "): hold it in every direction (Dirichlet components, "
+                  "Pinned points).");
   }
 
 

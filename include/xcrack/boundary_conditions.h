@@ -79,6 +79,19 @@ namespace xcrack
                  const double              size,
                  const double              youngs_modulus) const;
 
+    /**
+     * Throw an InputError when the Dirichlet data and the pinned points
+     * leave a rigid-body motion of the uncracked body free (rollers on one
+     * face only, say): the stiffness matrix would be singular, and a direct
+     * solver would return round-off divided by a zero pivot. The motions
+     * (dim translations, dim (dim - 1) / 2 rotations) restricted to the held
+     * components at the held vertices must have full rank (collective).
+     * A piece that a crack cuts loose is only seen after the solve.
+     */
+    void
+    check_rigid_body_motions(const Triangulation<dim> &triangulation,
+                             const double              size) const;
+
     std::map<types::boundary_id, std::shared_ptr<Function<dim>>> dirichlet;
     std::map<types::boundary_id, ComponentMask>                  dirichlet_mask;
     std::map<types::boundary_id, std::unique_ptr<Function<dim>>> neumann;

@@ -149,6 +149,7 @@ namespace xcrack
                           Utilities::MPI::min(low[d], mpi_communicator));
       displacement_scale = boundary_conditions.check_finite(
         triangulation, degree, size, material.youngs_modulus);
+      boundary_conditions.check_rigid_body_motions(triangulation, size);
     }
     check_input(!boundary_conditions.dirichlet.empty() ||
                   !boundary_conditions.pinned.empty(),

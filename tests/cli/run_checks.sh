@@ -2,7 +2,8 @@
 # Requirement: a run that passes the input checks writes numbers a user can
 # trust, or stops with a message that names the cause:
 # - data that is not finite where it is used: exit 1 naming the entry;
-# - a singular system (free rigid-body motion, a piece cut loose by the
+# - a rigid-body motion the supports leave free: exit 1 before any work;
+#   a singular system the checks cannot see (a piece cut loose by the
 #   crack): exit 3, "numerical failure";
 # - a write that fails: exit 2 naming the file;
 # - a crack or a tip the mesh cannot see, crowns that hold no vertex, a
@@ -83,8 +84,10 @@ grep -q "K_I_error" out/statistics.csv || fail "reference_zero: no K_I_error col
 grep -Eiq "(^|,)[-+]?(nan|inf)" out/statistics.csv out/front_*.csv && fail "reference_zero: nan or inf in a CSV"
 
 # 2. Singular systems.
-expect 3 rollers_only "numerical failure: the displacement of step 0 reaches .* the system is singular" \
+expect 1 rollers_only "input error: Boundary conditions: the Dirichlet data and Pinned points leave the body free to move \(a translation along y" \
   < <(bc "Dirichlet components = 2: x")
+expect 1 pins_in_a_line "input error: Boundary conditions: .* leave the body free to move \(a rotation about z\)" \
+  < <(printf 'subsection Boundary conditions\n  set Dirichlet =\n  set Pinned points = -1, -1: xy | 1, -1: x\nend\n')
 expect 3 cut_loose "numerical failure: .*a crack that cuts a piece loose" \
   < <(crack "-2, 0.1" "2, 0.1" none)
 grep -q '"status": "failed"' out/run.json || fail "cut_loose: run.json does not say failed"
