@@ -15,16 +15,9 @@ namespace xcrack
     {
       prm.enter_subsection("Forman");
       {
-        prm.declare_entry("C",
-                          "1e-9",
-                          Patterns::Double(),
-                          "Coefficient C (> 0), in length per cycle over "
-                          "(stress intensity)^(m - 1).");
-        prm.declare_entry("m", "3", Patterns::Double(), "Exponent m (> 0).");
-        prm.declare_entry("Threshold",
-                          "0",
-                          Patterns::Double(0),
-                          "Delta K_th: no growth at or below it.");
+        PowerLawConstants::declare_parameters(prm,
+                                              "1e-9",
+                                              "(stress intensity)^(m - 1)");
       }
       prm.leave_subsection();
     }
@@ -37,15 +30,7 @@ namespace xcrack
     {
       {
         const Plugins::ScopedSubsection scope(prm, "Forman");
-        c         = prm.get_double("C");
-        m         = prm.get_double("m");
-        threshold = prm.get_double("Threshold");
-        check_input(c > 0,
-                    "Propagation/Growth law/Forman/C = " + prm.get("C") +
-                      ": must be positive.");
-        check_input(m > 0,
-                    "Propagation/Growth law/Forman/m = " + prm.get("m") +
-                      ": must be positive.");
+        constants.parse_parameters(prm, "Forman");
       }
       toughness = this->get_material().fracture_toughness;
       check_input(toughness > 0,
@@ -62,12 +47,13 @@ namespace xcrack
                       const double,
                       const double load_ratio) const
     {
-      if (delta_k <= threshold)
+      if (delta_k <= constants.threshold)
         return 0.;
       const double r           = std::max(load_ratio, 0.);
       const double denominator = (1 - r) * toughness - delta_k;
-      return (denominator <= 0 ? std::numeric_limits<double>::infinity() :
-                                 c * std::pow(delta_k, m) / denominator);
+      return (denominator <= 0 ?
+                std::numeric_limits<double>::infinity() :
+                constants.c * std::pow(delta_k, constants.m) / denominator);
     }
 
     XCRACK_REGISTER_PLUGIN(Interface,

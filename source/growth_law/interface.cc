@@ -1,10 +1,44 @@
 #include <xcrack/growth_law/interface.h>
+#include <xcrack/input_error.h>
 #include <xcrack/simulator_access.h>
 
 namespace xcrack
 {
   namespace GrowthLaw
   {
+    void
+    PowerLawConstants::declare_parameters(ParameterHandler  &prm,
+                                          const std::string &default_c,
+                                          const std::string &c_units)
+    {
+      prm.declare_entry("C",
+                        default_c,
+                        Patterns::Double(),
+                        "Coefficient C (> 0), in length per cycle over " +
+                          c_units + ".");
+      prm.declare_entry("m", "3", Patterns::Double(), "Exponent m (> 0).");
+      prm.declare_entry("Threshold",
+                        "0",
+                        Patterns::Double(0),
+                        "Delta K_th: no growth at or below it.");
+    }
+
+
+
+    void
+    PowerLawConstants::parse_parameters(ParameterHandler  &prm,
+                                        const std::string &law)
+    {
+      c                       = prm.get_double("C");
+      m                       = prm.get_double("m");
+      threshold               = prm.get_double("Threshold");
+      const std::string entry = "Propagation/Growth law/" + law + "/";
+      check_input(c > 0, entry + "C = " + prm.get("C") + ": must be positive.");
+      check_input(m > 0, entry + "m = " + prm.get("m") + ": must be positive.");
+    }
+
+
+
     void
     declare_parameters(ParameterHandler &prm)
     {

@@ -13,16 +13,9 @@ namespace xcrack
     {
       prm.enter_subsection("Paris");
       {
-        prm.declare_entry("C",
-                          "1e-11",
-                          Patterns::Double(),
-                          "Coefficient C (> 0), in length per cycle over "
-                          "(stress intensity)^m.");
-        prm.declare_entry("m", "3", Patterns::Double(), "Exponent m (> 0).");
-        prm.declare_entry("Threshold",
-                          "0",
-                          Patterns::Double(0),
-                          "Delta K_th: no growth at or below it.");
+        PowerLawConstants::declare_parameters(prm,
+                                              "1e-11",
+                                              "(stress intensity)^m");
       }
       prm.leave_subsection();
     }
@@ -34,15 +27,7 @@ namespace xcrack
     Paris<dim>::parse_parameters(ParameterHandler &prm)
     {
       const Plugins::ScopedSubsection scope(prm, "Paris");
-      c         = prm.get_double("C");
-      m         = prm.get_double("m");
-      threshold = prm.get_double("Threshold");
-      check_input(c > 0,
-                  "Propagation/Growth law/Paris/C = " + prm.get("C") +
-                    ": must be positive.");
-      check_input(m > 0,
-                  "Propagation/Growth law/Paris/m = " + prm.get("m") +
-                    ": must be positive.");
+      constants.parse_parameters(prm, "Paris");
     }
 
 
@@ -51,7 +36,9 @@ namespace xcrack
     double
     Paris<dim>::rate(const double delta_k, const double, const double) const
     {
-      return (delta_k <= threshold ? 0. : c * std::pow(delta_k, m));
+      return (delta_k <= constants.threshold ?
+                0. :
+                constants.c * std::pow(delta_k, constants.m));
     }
 
     XCRACK_REGISTER_PLUGIN(Interface,

@@ -30,7 +30,8 @@ namespace xcrack
            const double load_ratio) const override;
 
     private:
-      double c = 1e-9, m = 3, threshold = 0, toughness = 0;
+      PowerLawConstants constants;
+      double            toughness = 0;
     };
   } // namespace GrowthLaw
 } // namespace xcrack

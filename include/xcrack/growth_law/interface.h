@@ -53,6 +53,29 @@ namespace xcrack
 
 
 
+    /**
+     * The constants the power laws share: the coefficient C, the exponent
+     * m and the threshold Delta K_th, declared in the law's own subsection
+     * and checked there (C > 0, m > 0), with messages that name the law.
+     */
+    struct PowerLawConstants
+    {
+      /// Declare C (default @p default_c, in @p c_units), m and Threshold in
+      /// the current subsection.
+      static void
+      declare_parameters(ParameterHandler  &prm,
+                         const std::string &default_c,
+                         const std::string &c_units);
+
+      /// Read them in the current subsection, the one of the law @p law.
+      void
+      parse_parameters(ParameterHandler &prm, const std::string &law);
+
+      double c = 1e-11, m = 3, threshold = 0;
+    };
+
+
+
     /// Declare `Model name` and every law's entries (in the current
     /// subsection).
     void

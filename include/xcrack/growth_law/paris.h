@@ -28,7 +28,7 @@ namespace xcrack
            const double load_ratio) const override;
 
     private:
-      double c = 1e-11, m = 3, threshold = 0;
+      PowerLawConstants constants;
     };
   } // namespace GrowthLaw
 } // namespace xcrack

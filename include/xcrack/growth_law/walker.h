@@ -29,7 +29,8 @@ namespace xcrack
            const double load_ratio) const override;
 
     private:
-      double c = 1e-11, m = 3, gamma = 0.5, threshold = 0;
+      PowerLawConstants constants;
+      double            gamma = 0.5;
     };
   } // namespace GrowthLaw
 } // namespace xcrack
