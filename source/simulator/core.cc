@@ -169,6 +169,9 @@ namespace xcrack
           {
             CrackSurface<dim> surface;
             surface.extract(level_sets, c);
+            // The measure is global: every rank takes this branch alike.
+            if (surface.measure() > 0)
+              continue;
             double h = 0;
             for (const auto &cell : triangulation.active_cell_iterators())
               if (cell->is_locally_owned())
@@ -182,7 +185,7 @@ namespace xcrack
                     << h
                     << " across). Refine the mesh there (Mesh/Initial global "
                        "refinement) or move the crack off the faces.";
-            check_input(surface.measure() > 0, message.str());
+            throw InputError(message.str());
           }
       }
     check_input(!boundary_conditions.lip_pressure || cracks.size() > 0,
@@ -201,7 +204,8 @@ namespace xcrack
         if (cracks.size() > 1)
           {
             DoFHandler<dim> probe(triangulation);
-            level_sets.initialize(cracks.shapes());
+            if (!resume_directory.empty()) // else done by the check above
+              level_sets.initialize(cracks.shapes());
             enrichment->set_fe_indices(probe, level_sets);
           }
         // Gauss rules per element: the cells of the tip zone carry the
