@@ -322,19 +322,22 @@ namespace xcrack
 
       for (const Node &node : band_nodes)
         {
-          const double         angle = node.sample.angle;
-          const Tensor<1, dim> e1 =
-            std::cos(angle) * node.e1 + std::sin(angle) * node.e2;
-          const Tensor<1, dim> e2 =
-            -std::sin(angle) * node.e1 + std::cos(angle) * node.e2;
-          new_lst[node.dof] = node.d * e1 - node.sample.advance;
+          const double angle = node.sample.angle;
+          const double c = std::cos(angle), s = std::sin(angle);
+          const double sign = (orientation[node.front] < 0 ? -1. : 1.);
+          // The node's coordinates in the frame of the old front: the old
+          // level sets themselves, not d . e1 and d . e2 (d ends on the
+          // polyline's chords, inside a curved front, and their frames tilt
+          // the plane).
+          const double t = old_lst[node.dof], n = sign * old_lsn[node.dof];
+          const Tensor<1, dim> e1 = c * node.e1 + s * node.e2;
+          new_lst[node.dof]       = c * t + s * n - node.sample.advance;
           // The old lsn is the crack surface only behind the old front;
           // ahead of it, it is an extension plane, which a crack that turned
           // leaves behind (its zeros, with the new lst < 0 there, would make
           // a piece of crack where there is none): the new plane there too.
           if (node.d * (node.e1 + e1) > 0 || old_lst[node.dof] > 0)
-            new_lsn[node.dof] =
-              (orientation[node.front] < 0 ? -1. : 1.) * (node.d * e2);
+            new_lsn[node.dof] = sign * (c * n - s * t);
         }
       new_lsn.compress(VectorOperation::insert);
       new_lst.compress(VectorOperation::insert);

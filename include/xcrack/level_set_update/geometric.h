@@ -16,13 +16,15 @@ namespace xcrack
      * Every node within `Band radius` of the old front is projected onto
      * it (the front as the fields show it, a polyline with frames), which
      * gives a front point p with frame (e1, e2), and the kink angle and
-     * advance interpolated there along the front from the moves. With the
-     * new direction e1' and normal e2' (e1, e2 turned by the kink angle)
-     * and d = x - p:
+     * advance interpolated there along the front from the moves. The
+     * node's coordinates in that frame are the old level sets themselves,
+     * t = lst and n = +-lsn (the sign that makes it d . e2 behind the
+     * front, d = x - p); with the kink angle k and the new direction
+     * e1' = cos(k) e1 + sin(k) e2:
      *
-     * - lst = d . e1' - advance: the signed distance to the new front
-     *   along the new direction;
-     * - lsn = d . e2' on the side of the new segment, i.e. where
+     * - lst = t cos(k) + n sin(k) - advance: the signed distance to the new
+     *   front along the new direction;
+     * - lsn = +-(n cos(k) - t sin(k)) on the side of the new segment, where
      *   d . (e1 + e1') > 0 (the bisector of the kink: lsn is continuous
      *   across it), and the old lsn on the other side, so that the crack
      *   surface behind the old front stays where it was; but where the old
@@ -30,6 +32,11 @@ namespace xcrack
      *   new plane replaces it on both sides (else the extension planes of
      *   a crack that keeps turning pile up, and their zeros become
      *   spurious pieces of crack).
+     *
+     * Taking t and n from the old fields rather than as d . e1 and d . e2
+     * keeps the discrete front's shape: d ends on the chords of the
+     * polyline, inside a curved front, and a penny lost the chords'
+     * sagitta of radius at every step (doc/verification.md).
      *
      * Nodes farther away keep lsn, and lst keeps its sign (behind stays
      * behind, ahead stays ahead: the front moved less than the band): only
