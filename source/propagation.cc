@@ -250,14 +250,24 @@ namespace xcrack
 
   template <int dim>
   double
-  Propagation<dim>::cycles(const FrontMove<dim>              &before,
+  Propagation<dim>::cycles(const std::vector<FrontMove<dim>> &before_moves,
                            const std::vector<FrontMove<dim>> &now) const
   {
-    if (!counts_cycles() || before.advance == 0)
+    const FrontMove<dim> *fast = fastest(before_moves);
+    if (!counts_cycles() || !fast || fast->advance == 0)
       return 0;
-    const double r  = std::max(load_ratio, 0.);
-    const double k0 = before.k_eq;
-    const double k1 = k_eq_at(before.new_position(), before.crack, now);
+    const FrontMove<dim> &before  = *fast;
+    double                weights = 0, growth = 0;
+    for (const FrontMove<dim> &m : before_moves)
+      if (m.crack == before.crack && m.advance > 0 && m.k_eq > 0)
+        {
+          const double w = std::pow(m.advance / before.advance, 10);
+          weights += w;
+          growth += w * k_eq_at(m.new_position(), m.crack, now) / m.k_eq;
+        }
+    const double r            = std::max(load_ratio, 0.);
+    const double k0           = before.k_eq;
+    const double k1           = k0 * growth / weights;
     const auto   inverse_rate = [&](const double t) {
       const double k    = std::sqrt((1 - t) * k0 * k0 + t * k1 * k1);
       const double rate = growth_law->rate((1 - r) * k, k, load_ratio);

@@ -36,7 +36,6 @@
 #include <chrono>
 #include <map>
 #include <memory>
-#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -319,9 +318,10 @@ namespace xcrack
     /// Whether the cracks left their initial shapes: until then each new
     /// mesh interpolates the shapes, afterwards the fields are carried.
     bool cracks_moved = false;
-    /// The fastest move of the previous step (for the cycle integration).
-    std::optional<FrontMove<dim>> previous_fastest;
-    Statistics                    statistics;
+    /// The moves of the previous step (for the cycle integration; empty
+    /// before the first one).
+    std::vector<FrontMove<dim>> previous_moves;
+    Statistics                  statistics;
     /// (step, file) of solution-<key>.pvtu and crack-<key>.vtu.
     std::vector<std::pair<double, std::string>> pvd_records, crack_records;
     /// @}

@@ -19,7 +19,7 @@ namespace xcrack
   {
     /// The version of the checkpoint format: a change of the state below
     /// must change it, so that an old checkpoint is refused, not misread.
-    constexpr unsigned int checkpoint_version = 1;
+    constexpr unsigned int checkpoint_version = 2;
   } // namespace
 
 
@@ -54,13 +54,11 @@ namespace xcrack
         const unsigned int              d       = dim;
         const unsigned int              n_ranks =
           Utilities::MPI::n_mpi_processes(mpi_communicator);
-        const unsigned int n_cracks    = cracks.size();
-        const unsigned int next_step   = step + 1;
-        const bool         has_fastest = previous_fastest.has_value();
-        FrontMove<dim> fastest = previous_fastest.value_or(FrontMove<dim>());
+        const unsigned int n_cracks  = cracks.size();
+        const unsigned int next_step = step + 1;
         archive << version << d << n_ranks << n_cracks << next_step << cycles
-                << cracks_moved << has_fastest << fastest << statistics
-                << pvd_records << crack_records;
+                << cracks_moved << previous_moves << statistics << pvd_records
+                << crack_records;
         file.close();
         AssertThrow(file,
                     ExcMessage("Could not write the checkpoint in " +
@@ -87,22 +85,16 @@ namespace xcrack
     // the mesh is touched.
     std::ifstream                   file(dir + "/state", std::ios::binary);
     boost::archive::binary_iarchive archive(file);
-    unsigned int   version = 0, d = 0, n_ranks = 0, n_cracks = 0, next_step = 0;
-    bool           has_fastest = false;
-    FrontMove<dim> fastest;
+    unsigned int version = 0, d = 0, n_ranks = 0, n_cracks = 0, next_step = 0;
     archive >> version >> d >> n_ranks >> n_cracks;
     check_input(version == checkpoint_version && d == dim &&
                   n_cracks == cracks.size(),
                 "--resume " + directory +
                   ": the checkpoint was written by another version of xcrack "
                   "or for another problem.");
-    archive >> next_step >> cycles >> cracks_moved >> has_fastest >> fastest >>
+    archive >> next_step >> cycles >> cracks_moved >> previous_moves >>
       statistics >> pvd_records >> crack_records;
     step = next_step;
-    if (has_fastest)
-      previous_fastest = fastest;
-    else
-      previous_fastest.reset();
 
     load_mesh(dir);
     if (n_ranks != Utilities::MPI::n_mpi_processes(mpi_communicator))

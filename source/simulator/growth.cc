@@ -29,9 +29,9 @@ namespace xcrack
                                     fronts_per_crack(),
                                     propagation.maximum_advance());
     double delta_cycles = 0;
-    if (previous_fastest)
+    if (!previous_moves.empty())
       {
-        delta_cycles = propagation.cycles(*previous_fastest, front_moves);
+        delta_cycles = propagation.cycles(previous_moves, front_moves);
         cycles += delta_cycles;
       }
     statistics.add_value("cycles", cycles);
@@ -59,7 +59,7 @@ namespace xcrack
       }
     Propagation<dim>::scale_advances(front_moves, verdict.stop ? 0. : largest);
     if (!verdict.stop)
-      previous_fastest = *Propagation<dim>::fastest(front_moves);
+      previous_moves = front_moves;
 
     double size = 0, k_max = 0, delta_k = 0;
     for (const auto &surface : crack_surfaces)
