@@ -45,6 +45,12 @@ def fronts(directory):
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("directory", help="the run's output directory")
+    parser.add_argument("--view", default="",
+                        help="3D: the two axes of the fronts' figure, e.g. "
+                        "xz (default: the two of largest extent)")
+    parser.add_argument("--path-figure", default="",
+                        help="where to write the figure of the path or "
+                        "fronts (default: DIRECTORY/growth_path.png)")
     args = parser.parse_args()
     table = steps(args.directory)
     if not table or "crack_size" not in table[0]:
@@ -101,6 +107,10 @@ def main():
         spans = [max(p[d] for p in points) - min(p[d] for p in points)
                  for d in range(3)]
         a, b = sorted(range(3), key=lambda d: -spans[d])[:2]
+        if args.view:
+            if len(args.view) != 2 or any(c not in "xyz" for c in args.view):
+                raise SystemExit(f"--view {args.view}: two of x, y, z")
+            a, b = "xyz".index(args.view[0]), "xyz".index(args.view[1])
         for step in sorted(by_step):
             rows = by_step[step]
             for front in sorted({r["front"] for r in rows}):
@@ -112,11 +122,12 @@ def main():
         ax.set_ylabel("xyz"[b])
     ax.set_aspect("equal", adjustable="datalim")
     ax.grid(True, lw=0.3)
-    ax.set_title("crack path" if not three_d else "fronts, step by step")
+    ax.set_title("crack path" if not three_d else
+                 f"fronts, step by step (0 to {max(by_step)}, dark to light)")
     if not three_d:
         ax.legend(fontsize=8)
     fig.tight_layout()
-    path = os.path.join(args.directory, "growth_path.png")
+    path = args.path_figure or os.path.join(args.directory, "growth_path.png")
     fig.savefig(path, dpi=120)
     print(f"wrote {path}")
 
