@@ -48,12 +48,9 @@ namespace xcrack
 
     template <int dim>
     double
-    Geometric<dim>::band(const LevelSetFields<dim> &fields,
-                         const unsigned int         crack,
-                         const double               largest_advance) const
+    Geometric<dim>::front_cell_size(const LevelSetFields<dim> &fields,
+                                    const unsigned int         crack) const
     {
-      if (band_radius > 0)
-        return band_radius;
       // The largest cell at the front: a vertex nearer to it than the
       // cell's diameter.
       const std::vector<double> lsn = fields.vertex_values(crack, true);
@@ -66,7 +63,17 @@ namespace xcrack
             if (std::hypot(lsn[cell->vertex_index(v)],
                            lst[cell->vertex_index(v)]) < cell->diameter())
               h = std::max(h, cell->diameter());
-      h = Utilities::MPI::max(h, this->get_mpi_communicator());
+      return Utilities::MPI::max(h, this->get_mpi_communicator());
+    }
+
+
+
+    template <int dim>
+    double
+    Geometric<dim>::band(const double h, const double largest_advance) const
+    {
+      if (band_radius > 0)
+        return band_radius;
       const double radius = (this->get_enrichment() ?
                                this->get_enrichment()->get_parameters().radius :
                                0.);
@@ -235,7 +242,8 @@ namespace xcrack
           t             = sorted;
         }
 
-      const double           radius      = band(fields, crack, largest);
+      const double           h           = front_cell_size(fields, crack);
+      const double           radius      = band(h, largest);
       const DoFHandler<dim> &dof_handler = fields.get_dof_handler();
       std::map<types::global_dof_index, Point<dim>> support;
       DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
@@ -326,10 +334,15 @@ namespace xcrack
           const double c = std::cos(angle), s = std::sin(angle);
           const double sign = (orientation[node.front] < 0 ? -1. : 1.);
           // The node's coordinates in the frame of the old front: the old
-          // level sets themselves, not d . e1 and d . e2 (d ends on the
-          // polyline's chords, inside a curved front, and their frames tilt
-          // the plane).
-          const double t = old_lst[node.dof], n = sign * old_lsn[node.dof];
+          // level sets where they agree with d . e1 and d . e2 within a
+          // front cell (d ends on the polyline's chords, inside a curved
+          // front, and their frames tilt the plane); the projection where
+          // they do not (far nodes keep only the sign of their old values).
+          const double t_old = old_lst[node.dof],
+                       n_old = sign * old_lsn[node.dof];
+          const double t_new = node.d * node.e1, n_new = node.d * node.e2;
+          const double t = (std::abs(t_old - t_new) < h ? t_old : t_new);
+          const double n = (std::abs(n_old - n_new) < h ? n_old : n_new);
           const Tensor<1, dim> e1 = c * node.e1 + s * node.e2;
           new_lst[node.dof]       = c * t + s * n - node.sample.advance;
           // The old lsn is the crack surface only behind the old front;

@@ -17,9 +17,12 @@ namespace xcrack
      * it (the front as the fields show it, a polyline with frames), which
      * gives a front point p with frame (e1, e2), and the kink angle and
      * advance interpolated there along the front from the moves. The
-     * node's coordinates in that frame are the old level sets themselves,
-     * t = lst and n = +-lsn (the sign that makes it d . e2 behind the
-     * front, d = x - p); with the kink angle k and the new direction
+     * node's coordinates in that frame are the old level sets, t = lst and
+     * n = +-lsn (the sign that makes it d . e2 behind the front, d = x - p),
+     * where they agree with d . e1 and d . e2 within a front cell, else
+     * the latter (farther nodes keep only the signs of their old values, so
+     * a node entering the band may bring a stale value); with the kink
+     * angle k and the new direction
      * e1' = cos(k) e1 + sin(k) e2:
      *
      * - lst = t cos(k) + n sin(k) - advance: the signed distance to the new
@@ -59,16 +62,19 @@ namespace xcrack
              LevelSetFields<dim>               &fields) const override;
 
     private:
+      /// The largest diameter of the cells at the front of crack @p crack.
+      double
+      front_cell_size(const LevelSetFields<dim> &fields,
+                      const unsigned int         crack) const;
+
       /**
        * The band radius of a step whose largest advance is
-       * @p largest_advance: `Band radius`, or (0) twice the larger of the
-       * enrichment radius and six diameters of the cells at the front,
-       * plus twice the advance.
+       * @p largest_advance, with front cells of size @p h: `Band radius`,
+       * or (0) twice the larger of the enrichment radius and six front
+       * cells, plus twice the advance.
        */
       double
-      band(const LevelSetFields<dim> &fields,
-           const unsigned int         crack,
-           const double               largest_advance) const;
+      band(const double h, const double largest_advance) const;
 
       double band_radius = 0;
     };
