@@ -250,16 +250,21 @@ namespace xcrack
 
   template <int dim>
   double
-  Propagation<dim>::cycles(const std::vector<FrontMove<dim>> &before_moves,
-                           const std::vector<FrontMove<dim>> &now) const
+  Propagation<dim>::crack_cycles(
+    const std::vector<FrontMove<dim>> &before_moves,
+    const unsigned int                 crack,
+    const std::vector<FrontMove<dim>> &now) const
   {
-    const FrontMove<dim> *fast = fastest(before_moves);
-    if (!counts_cycles() || !fast || fast->advance == 0)
+    const FrontMove<dim> *fast = nullptr;
+    for (const FrontMove<dim> &m : before_moves)
+      if (m.crack == crack && m.rate > 0 && (!fast || m.rate > fast->rate))
+        fast = &m;
+    if (!fast || fast->advance == 0)
       return 0;
     const FrontMove<dim> &before  = *fast;
     double                weights = 0, growth = 0;
     for (const FrontMove<dim> &m : before_moves)
-      if (m.crack == before.crack && m.advance > 0 && m.k_eq > 0)
+      if (m.crack == crack && m.advance > 0 && m.k_eq > 0)
         {
           const double w = std::pow(m.advance / before.advance, 10);
           weights += w;
@@ -292,6 +297,65 @@ namespace xcrack
     if (std::isinf(integral))
       return before.advance / before.rate;
     return before.advance * integral;
+  }
+
+
+
+  template <int dim>
+  double
+  Propagation<dim>::cycles(const std::vector<FrontMove<dim>> &before_moves,
+                           const std::vector<FrontMove<dim>> &now) const
+  {
+    const FrontMove<dim> *fast = fastest(before_moves);
+    if (!counts_cycles() || !fast)
+      return 0;
+    return crack_cycles(before_moves, fast->crack, now);
+  }
+
+
+
+  template <int dim>
+  void
+  Propagation<dim>::catch_up(const std::vector<FrontMove<dim>> &before_moves,
+                             const double                       delta_cycles,
+                             std::vector<FrontMove<dim>>       &now) const
+  {
+    if (!counts_cycles() || !(delta_cycles > 0))
+      return;
+    // The previous advances without their own catching up: that part was
+    // owed from the step before and is not counted twice.
+    std::vector<FrontMove<dim>> own_moves = before_moves;
+    unsigned int                n_cracks  = 0;
+    for (FrontMove<dim> &m : own_moves)
+      {
+        m.advance -= m.catch_up;
+        n_cracks = std::max(n_cracks, m.crack + 1);
+      }
+    for (unsigned int c = 0; c < n_cracks; ++c)
+      {
+        // The cycles crack c took for its advances, at its own rates: the
+        // step's cycles exactly for the crack of the fastest point.
+        const double own = crack_cycles(own_moves, c, now);
+        if (!(own > 0) || own == delta_cycles)
+          continue;
+        const double behind = delta_cycles / own - 1;
+        for (FrontMove<dim> &m : now)
+          {
+            if (m.crack != c || m.advance == 0)
+              continue;
+            // The last advance of the previous point nearest to this one.
+            double distance = std::numeric_limits<double>::max(), last = 0;
+            for (const FrontMove<dim> &p : own_moves)
+              if (p.crack == c &&
+                  p.new_position().distance(m.point.position) < distance)
+                {
+                  distance = p.new_position().distance(m.point.position);
+                  last     = p.advance;
+                }
+            m.catch_up = std::max(behind * last, -m.advance);
+            m.advance += m.catch_up;
+          }
+      }
   }
 
 

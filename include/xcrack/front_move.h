@@ -29,8 +29,9 @@ namespace xcrack
     double rate = 0;
     /// Kink angle from e1 towards e2 (radians).
     double angle = 0;
-    /// The advance in this step.
-    double advance = 0;
+    /// The advance in this step, and the part of it that catches up with
+    /// the previous step (Propagation::catch_up()).
+    double advance = 0, catch_up = 0;
 
     /// The new direction of propagation e1' (e1 turned by the kink angle).
     Tensor<1, dim>
@@ -58,7 +59,8 @@ namespace xcrack
     void
     serialize(Archive &archive, const unsigned int)
     {
-      archive &crack &front &point &k_eq &delta_k &rate &angle &advance;
+      archive &crack &front &point &k_eq &delta_k &rate &angle &advance
+        &catch_up;
     }
   };
 } // namespace xcrack

@@ -116,6 +116,27 @@ namespace xcrack
     cycles(const std::vector<FrontMove<dim>> &before,
            const std::vector<FrontMove<dim>> &now) const;
 
+    /**
+     * Corrects the advances @p now of the cracks other than the fastest
+     * one's by what their last advances @p before_moves missed or
+     * overshot: their points advanced by the ratio of their rates to the
+     * fastest point's at the start of the step (forward Euler), while the
+     * step took @p delta_cycles, integrated along the fastest point's path;
+     * a crack whose K grows more slowly than the fastest point's advanced
+     * too far. Each point of such a crack gets, on top of its advance,
+     * (delta_cycles / own - 1) times the last advance of the nearest
+     * previous point (without that point's own catching up, which was owed
+     * from the step before), where own is the cycles its crack's last
+     * advances take at its own K's, integrated as cycles() does: the
+     * cumulated growth of every crack follows its own rate, to the error of
+     * the last step. The crack of the fastest point keeps its advances (the
+     * factor is 1).
+     */
+    void
+    catch_up(const std::vector<FrontMove<dim>> &before_moves,
+             const double                       delta_cycles,
+             std::vector<FrontMove<dim>>       &now) const;
+
     /// Move every crack's level sets in @p fields by @p moves.
     void
     update_level_sets(const std::vector<FrontMove<dim>> &moves,
@@ -126,6 +147,13 @@ namespace xcrack
     load_factor(const std::vector<FrontMove<dim>> &moves) const;
 
   private:
+    /// The cycles in which the fastest point of crack @p crack in
+    /// @p before_moves advanced, integrated as cycles() does.
+    double
+    crack_cycles(const std::vector<FrontMove<dim>> &before_moves,
+                 const unsigned int                 crack,
+                 const std::vector<FrontMove<dim>> &now) const;
+
     /// K_eq at @p x on the fronts of crack @p crack (moves of a step).
     double
     k_eq_at(const Point<dim>                  &x,

@@ -19,7 +19,7 @@ namespace xcrack
   {
     /// The version of the checkpoint format: a change of the state below
     /// must change it, so that an old checkpoint is refused, not misread.
-    constexpr unsigned int checkpoint_version = 2;
+    constexpr unsigned int checkpoint_version = 3;
   } // namespace
 
 

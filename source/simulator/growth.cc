@@ -59,7 +59,10 @@ namespace xcrack
       }
     Propagation<dim>::scale_advances(front_moves, verdict.stop ? 0. : largest);
     if (!verdict.stop)
-      previous_moves = front_moves;
+      {
+        propagation.catch_up(previous_moves, delta_cycles, front_moves);
+        previous_moves = front_moves;
+      }
 
     double size = 0, k_max = 0, delta_k = 0;
     for (const auto &surface : crack_surfaces)
