@@ -9,6 +9,7 @@
 #include <xcrack/boundary_conditions.h>
 #include <xcrack/input_error.h>
 
+#include <array>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -419,11 +420,14 @@ namespace xcrack
     // component) of the modes' values there, outer product.
     std::vector<double> gram(n_modes * n_modes, 0.);
     const auto hold = [&](const Point<dim> &x, const ComponentMask &mask) {
+      std::array<Tensor<1, dim>, n_modes> u;
+      for (unsigned int i = 0; i < n_modes; ++i)
+        u[i] = mode(x, i);
       for (unsigned int c = 0; c < dim; ++c)
         if (mask.size() == 0 || mask[c])
           for (unsigned int i = 0; i < n_modes; ++i)
             for (unsigned int j = 0; j < n_modes; ++j)
-              gram[i * n_modes + j] += mode(x, i)[c] * mode(x, j)[c];
+              gram[i * n_modes + j] += u[i][c] * u[j][c];
     };
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -448,7 +452,6 @@ namespace xcrack
     for (const double e : eigenvalues)
       largest = std::max(largest, e);
     std::vector<std::string> free;
-    const char              *name[6]  = {"x", "y", "z", "", "", ""};
     const char              *about[3] = {"z", "x", "y"};
     for (unsigned int k = 0; k < eigenvalues.size(); ++k)
       if (eigenvalues(k) <= 1e-10 * largest)
@@ -458,10 +461,10 @@ namespace xcrack
           for (unsigned int i = 1; i < n_modes; ++i)
             if (std::abs(modes(i, k)) > std::abs(modes(biggest, k)))
               biggest = i;
-          free.push_back(biggest < dim ?
-                           std::string("a translation along ") + name[biggest] :
-                           std::string("a rotation about ") +
-                             about[biggest - dim]);
+          free.push_back(
+            biggest < dim ?
+              std::string("a translation along ") + "xyz"[biggest] :
+              std::string("a rotation about ") + about[biggest - dim]);
         }
     std::string list;
     for (unsigned int i = 0; i < free.size(); ++i)

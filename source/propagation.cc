@@ -320,7 +320,9 @@ namespace xcrack
                              const double                       delta_cycles,
                              std::vector<FrontMove<dim>>       &now) const
   {
-    if (!counts_cycles() || !(delta_cycles > 0))
+    const FrontMove<dim> *fast_before = fastest(before_moves);
+    const FrontMove<dim> *fast_now    = fastest(now);
+    if (!counts_cycles() || !(delta_cycles > 0) || !fast_before)
       return;
     // The previous advances without their own catching up: that part was
     // owed from the step before and is not counted twice.
@@ -333,10 +335,13 @@ namespace xcrack
       }
     for (unsigned int c = 0; c < n_cracks; ++c)
       {
-        // The cycles crack c took for its advances, at its own rates: the
-        // step's cycles exactly for the crack of the fastest point.
+        // The crack of the last step's fastest point took the step's cycles
+        // by definition; the one of this step's keeps the largest advance.
+        if (c == fast_before->crack || (fast_now && c == fast_now->crack))
+          continue;
+        // The cycles crack c took for its advances, at its own rates.
         const double own = crack_cycles(own_moves, c, now);
-        if (!(own > 0) || own == delta_cycles)
+        if (!(own > 0))
           continue;
         const double behind = delta_cycles / own - 1;
         for (FrontMove<dim> &m : now)

@@ -129,8 +129,9 @@ namespace xcrack
      * from the step before), where own is the cycles its crack's last
      * advances take at its own K's, integrated as cycles() does: the
      * cumulated growth of every crack follows its own rate, to the error of
-     * the last step. The crack of the fastest point keeps its advances (the
-     * factor is 1).
+     * the last step. The cracks of the fastest points of the last step (it
+     * took those cycles) and of this one (it keeps the largest advance) are
+     * left as they are.
      */
     void
     catch_up(const std::vector<FrontMove<dim>> &before_moves,
