@@ -333,16 +333,23 @@ namespace xcrack
           const double angle = node.sample.angle;
           const double c = std::cos(angle), s = std::sin(angle);
           const double sign = (orientation[node.front] < 0 ? -1. : 1.);
-          // The node's coordinates in the frame of the old front: the old
-          // level sets where they agree with d . e1 and d . e2 within a
-          // front cell (d ends on the polyline's chords, inside a curved
-          // front, and their frames tilt the plane); the projection where
-          // they do not (far nodes keep only the sign of their old values).
+          // The node's coordinates in the frame of the old front. A 2D tip
+          // is a point: the projection d . e1, d . e2 is exact. (The old
+          // level sets near the new tip may have been interpolated, when
+          // the mesh was refined after the last update, from cells across
+          // the last kink: kept there, they tilt the next frame and the path
+          // breaks up into zigzags.) A 3D front is a polyline: d ends on its
+          // chords, inside a curved front, and their frames tilt the plane;
+          // there the old level sets where they agree with the projection
+          // within a front cell, the projection where they do not (far
+          // nodes keep only the sign of their old values).
           const double t_old = old_lst[node.dof],
                        n_old = sign * old_lsn[node.dof];
           const double t_new = node.d * node.e1, n_new = node.d * node.e2;
-          const double t = (std::abs(t_old - t_new) < h ? t_old : t_new);
-          const double n = (std::abs(n_old - n_new) < h ? n_old : n_new);
+          const bool   keep_t     = (dim == 3 && std::abs(t_old - t_new) < h);
+          const bool   keep_n     = (dim == 3 && std::abs(n_old - n_new) < h);
+          const double t          = (keep_t ? t_old : t_new);
+          const double n          = (keep_n ? n_old : n_new);
           const Tensor<1, dim> e1 = c * node.e1 + s * node.e2;
           new_lst[node.dof]       = c * t + s * n - node.sample.advance;
           // The old lsn is the crack surface only behind the old front;

@@ -26,7 +26,19 @@ namespace xcrack
             reason << "crack " << c + 1 << " now has "
                    << surfaces[c].fronts().size()
                    << (dim == 2 ? " tips" : " fronts") << " instead of "
-                   << n_fronts[c] << ": it reached the surface of the body";
+                   << n_fronts[c];
+            // A 2D crack gains tips only through a new piece: one the
+            // level sets made inside the body, where there is none.
+            if (dim == 2 && surfaces[c].fronts().size() > n_fronts[c])
+              {
+                reason << ": a piece of crack appeared inside the body (tips";
+                for (const auto &front : surfaces[c].fronts())
+                  reason << " (" << front[0].position << ")";
+                reason << "); the level-set update lost the crack's shape "
+                          "(a crack that turned strongly)";
+              }
+            else
+              reason << ": it reached the surface of the body";
             verdict.stop   = true;
             verdict.reason = reason.str();
             return verdict;

@@ -14,7 +14,8 @@ namespace xcrack
      * `crack leaves body`: the run ends when a 2D tip would be moved out of
      * the body by the next advance, or when a crack's fronts change in
      * number (a tip or a piece of front reached the surface: the body is
-     * split or the crack has broken through a wall).
+     * split or the crack has broken through a wall; or, in 2D, the crack
+     * gained a piece that the level sets made inside the body).
      */
     template <int dim>
     class CrackLeavesBody : public Interface<dim>, public SimulatorAccess<dim>
