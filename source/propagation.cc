@@ -46,6 +46,16 @@ namespace xcrack
                         "K_III^2 / (1 - nu) to K_eq^2 (as the energy "
                         "release rate does). Mode III never twists the "
                         "front.");
+      prm.declare_entry(
+        "Direction integration",
+        "explicit",
+        Patterns::Selection("explicit|predictor-corrector"),
+        "explicit: each step kinks by the direction criterion's angle at "
+        "its start; the path converges slowly as the advance shrinks where "
+        "the crack turns. predictor-corrector: a trial step is solved, and "
+        "the kink is the mean of the angle at the start and the one the "
+        "trial front asks for (trapezoidal rule; one more solve and K "
+        "extraction per step).");
       prm.enter_subsection("Direction criterion");
       DirectionCriterion::declare_parameters(prm);
       prm.leave_subsection();
@@ -73,6 +83,8 @@ namespace xcrack
                       EquivalentK::criterion :
                       EquivalentK::energy_release_rate);
     add_mode_III = (prm.get("Mode III") == "added");
+    predictor_corrector =
+      (prm.get("Direction integration") == "predictor-corrector");
     check_input(steps == 0 || advance > 0,
                 "Propagation/Maximum advance = " + prm.get("Maximum advance") +
                   ": must be positive when Number of steps > 0.");
@@ -372,6 +384,38 @@ namespace xcrack
   {
     for (unsigned int c = 0; c < fields.n_cracks(); ++c)
       level_set_update->update(c, moves, fields);
+  }
+
+
+
+  template <int dim>
+  bool
+  Propagation<dim>::corrects_directions() const
+  {
+    return predictor_corrector;
+  }
+
+
+
+  template <int dim>
+  void
+  Propagation<dim>::correct_directions(std::vector<FrontMove<dim>>       &moves,
+                                       const std::vector<FrontMove<dim>> &trial)
+  {
+    for (FrontMove<dim> &m : moves)
+      {
+        if (!(m.advance > 0))
+          continue;
+        const Point<dim>      x       = m.new_position();
+        const FrontMove<dim> *nearest = nullptr;
+        for (const FrontMove<dim> &t : trial)
+          if (t.crack == m.crack &&
+              (nearest == nullptr || x.distance(t.point.position) <
+                                       x.distance(nearest->point.position)))
+            nearest = &t;
+        if (nearest != nullptr)
+          m.angle += 0.5 * nearest->angle;
+      }
   }
 
 

@@ -138,6 +138,24 @@ namespace xcrack
              const double                       delta_cycles,
              std::vector<FrontMove<dim>>       &now) const;
 
+    /// Whether each step's kinks are corrected by a trial step
+    /// (Direction integration = predictor-corrector).
+    bool
+    corrects_directions() const;
+
+    /**
+     * Predictor-corrector kinks: each point of @p moves that advances turns
+     * by the mean of its own kink angle and the one that the point of
+     * @p trial (the moves computed after a trial step along @p moves)
+     * nearest to its new position asks for. A kink taken at the start of
+     * a step lags the path (the crack's K_II changes along the segment:
+     * the T-stress acts on the new direction); the mean is the trapezoidal
+     * rule of the direction along the step.
+     */
+    static void
+    correct_directions(std::vector<FrontMove<dim>>       &moves,
+                       const std::vector<FrontMove<dim>> &trial);
+
     /// Move every crack's level sets in @p fields by @p moves.
     void
     update_level_sets(const std::vector<FrontMove<dim>> &moves,
@@ -161,11 +179,12 @@ namespace xcrack
             const unsigned int                 crack,
             const std::vector<FrontMove<dim>> &moves) const;
 
-    unsigned int steps        = 0;
-    double       advance      = 0;
-    double       load_ratio   = 0;
-    EquivalentK  equivalent_k = EquivalentK::energy_release_rate;
-    bool         add_mode_III = false;
+    unsigned int steps               = 0;
+    double       advance             = 0;
+    double       load_ratio          = 0;
+    EquivalentK  equivalent_k        = EquivalentK::energy_release_rate;
+    bool         add_mode_III        = false;
+    bool         predictor_corrector = false;
     std::unique_ptr<DirectionCriterion::Interface<dim>> direction_criterion;
     std::unique_ptr<GrowthLaw::Interface<dim>>          growth_law;
     std::unique_ptr<LevelSetUpdate::Interface<dim>>     level_set_update;

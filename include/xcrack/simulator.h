@@ -185,6 +185,15 @@ namespace xcrack
     void
     advance_cracks();
 
+    /**
+     * Direction integration = predictor-corrector: move the cracks by the
+     * moves on the current mesh, solve, extract K there, correct the moves'
+     * kinks by the trial fronts' (Propagation::correct_directions()), undo
+     * the trial and rewrite the front file @p key with the corrected moves.
+     */
+    void
+    correct_directions(const std::string &key);
+
     /// The fronts per crack, as compute_fracture_parameters() numbers them.
     std::vector<unsigned int>
     fronts_per_crack() const;
@@ -226,10 +235,11 @@ namespace xcrack
     /**
      * K and G along the fronts (InteractionIntegral) into front_values,
      * cross-checked by the displacement jumps: printed, added to the
-     * statistics (and the error against `Reference K`) (fracture.cc).
+     * statistics (and the error against `Reference K`) (fracture.cc). With
+     * @p report false only front_values (a trial step's).
      */
     void
-    compute_fracture_parameters();
+    compute_fracture_parameters(const bool report = true);
 
     /// front_<key>.csv: K, G and, in a growth run, the moves (fracture.cc).
     void

@@ -353,6 +353,7 @@ namespace xcrack
               << " cycles) from " << resume_directory << std::endl;
       }
 
+    std::string key;
     for (bool stop = false; !stop;)
       {
         // Step 0 may be solved on several successively refined meshes (a
@@ -372,12 +373,14 @@ namespace xcrack
             // front file shows them).
             if (propagation.enabled() && mesh + 1 == n_meshes)
               stop = grow();
-            finish_solve(
-              Utilities::int_to_string(step, 3) +
-              (n_meshes > 1 ? "." + Utilities::int_to_string(mesh, 2) : ""));
+            key = Utilities::int_to_string(step, 3) +
+                  (n_meshes > 1 ? "." + Utilities::int_to_string(mesh, 2) : "");
+            finish_solve(key);
           }
         if (!propagation.enabled() || stop)
           break;
+        if (propagation.corrects_directions())
+          correct_directions(key);
         advance_cracks();
         ++step;
       }

@@ -159,6 +159,62 @@ namespace xcrack
 
 
 
+  template <int dim>
+  void
+  Simulator<dim>::correct_directions(const std::string &key)
+  {
+    // What the trial step changes, to be restored after it: the fields
+    // (fit to vertex shifts them too), the fronts and their K's.
+    std::vector<TrilinosWrappers::MPI::Vector> lsn, lst;
+    for (unsigned int c = 0; c < level_sets.n_cracks(); ++c)
+      {
+        lsn.push_back(level_sets.lsn(c));
+        lst.push_back(level_sets.lst(c));
+      }
+    const std::vector<FrontValues<dim>>  values    = front_values;
+    const std::vector<CrackSurface<dim>> surfaces  = crack_surfaces;
+    const bool                           moved     = cracks_moved;
+    const std::vector<FrontMove<dim>>    predictor = front_moves;
+    {
+      TimerOutput::Scope t(*timer, "levelset");
+      propagation.update_level_sets(front_moves, level_sets);
+      cracks_moved = true;
+    }
+    setup_system();
+    assemble_system();
+    solve();
+    for (unsigned int c = 0; c < crack_surfaces.size(); ++c)
+      crack_surfaces[c].extract(level_sets, c);
+    compute_fracture_parameters(false);
+    const std::vector<FrontMove<dim>> trial =
+      propagation.moves(front_values,
+                        fronts_per_crack(),
+                        propagation.maximum_advance());
+    Propagation<dim>::correct_directions(front_moves, trial);
+    previous_moves = front_moves;
+
+    for (unsigned int c = 0; c < level_sets.n_cracks(); ++c)
+      level_sets.set(c, lsn[c], lst[c]);
+    front_values   = values;
+    crack_surfaces = surfaces;
+    cracks_moved   = moved;
+    if (detailed_screen)
+      {
+        double largest = 0;
+        for (unsigned int k = 0; k < front_moves.size(); ++k)
+          largest =
+            std::max(largest,
+                     std::abs(front_moves[k].angle - predictor[k].angle));
+        pcout << "  trial step: kinks corrected by up to "
+              << largest * 180 / numbers::PI << " degrees" << std::endl;
+      }
+    if (enrichment && fracture_parameters.compute &&
+        Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      write_front_file(key);
+  }
+
+
+
   template class Simulator<2>;
   template class Simulator<3>;
 } // namespace xcrack
