@@ -299,11 +299,14 @@ namespace xcrack
               // Far from the front only the signs matter, and the front
               // cannot have passed a node farther than the advance: behind
               // stays behind, ahead (or aside, where the crack turned away)
-              // stays ahead. (Shifting every lst by the advance, old
-              // extension planes that the crack turned away from became
-              // cracks after enough steps.)
-              new_lst[dof] =
-                (t0 <= 0 ? t0 - largest : std::max(t0 - largest, 0.5 * t0));
+              // stays ahead, as far as it was. (Shifting every lst by the
+              // advance, old extension planes that the crack turned away
+              // from became cracks after enough steps; halving it there,
+              // lst tended to 0, and a cell refined later across such a
+              // node and one behind got lst < 0 along the old plane: the
+              // DCB paths stopped on such pieces after turning by 60
+              // degrees.)
+              new_lst[dof] = (t0 <= 0 ? t0 - largest : t0);
               continue;
             }
           Node node;
