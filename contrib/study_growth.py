@@ -7,6 +7,7 @@ for doc/verification.md and doc/performance.md.
     /usr/bin/python3 contrib/study_growth.py advance
     /usr/bin/python3 contrib/study_growth.py cost [--runs 3]
     /usr/bin/python3 contrib/study_growth.py dcb [--jobs 2]
+    /usr/bin/python3 contrib/study_growth.py kink [--jobs 2]
 
 `paris`: prm/benchmarks/paris_center_2d.prm (Griffith centre crack,
 a0 = 1 mm -> af = 10 mm, closed form 776,634 cycles) for several values of
@@ -21,10 +22,16 @@ advance.
 to 5 front cells: the cycles against the closed form (332,671 cycles).
 
 `dcb`: prm/benchmarks/dcb_2d.prm (BENCHMARKS.md Case 11) for the three
-initial kinks, with Maximum advance 0.1 and 0.05, at 0.05 a mesh refined
-once more, and on that mesh the advance 0.025: the height of the path at
-x = 4.6, 5.0 and 5.4 (the ordering of the kinks, the convergence in advance
-and mesh) and the figure doc/figures/dcb_paths.png.
+initial kinks, with explicit and predictor-corrector directions and Maximum
+advance 0.1, 0.05 and 0.025 on front cells of 0.012, and at 0.05 on cells
+half as large (both directions): the height of the path at x = 4.6, 5.0 and 5.4 (the ordering
+of the kinks, the convergence in advance and mesh), where each run ended,
+and the figure doc/figures/dcb_paths.png.
+
+`kink`: K_II / K_I at the tip of a kink of 10 degrees and length s at the
+end of the DCB's crack, on meshes refined around it (crowns of 2 to 4
+cells): a kink shorter than the crowns is read wrong under the beam's
+T-stress.
 
 `cost`: the wall time of each phase of a step (solve, assembly, K, level-set
 update, refinement, checkpoint, output) on the 2D benchmark and on a coarse
@@ -32,6 +39,7 @@ update, refinement, checkpoint, output) on the 2D benchmark and on a coarse
 """
 import argparse
 import concurrent.futures
+import math
 import os
 import statistics
 import sys
@@ -132,20 +140,29 @@ def advance(args):
 
 
 def tip_path(work):
-    """The tip positions of a 2D run in work/out, step by step."""
+    """The tip positions of a 2D run in work/out, step by step (of several
+    tips, the one nearest to the previous step's)."""
     import csv
     import glob
+    import math
     import re
-    points = {}
+    tips = {}
     for path in glob.glob(os.path.join(work, "out", "front_*.csv")):
         match = re.match(r"front_(\d+)\.csv$", os.path.basename(path))
         if match:
             with open(path) as f:
                 rows = list(csv.DictReader(f))
             if rows:
-                points[int(match.group(1))] = (float(rows[0]["x"]),
-                                              float(rows[0]["y"]))
-    return [points[k] for k in sorted(points)]
+                tips[int(match.group(1))] = [(float(r["x"]), float(r["y"]))
+                                             for r in rows]
+    path = []
+    for k in sorted(tips):
+        candidates = tips[k]
+        if path:
+            candidates = sorted(candidates,
+                                key=lambda p: math.dist(p, path[-1]))
+        path.append(candidates[0])
+    return path
 
 
 def height_at(path, x):
@@ -160,11 +177,14 @@ def dcb(args):
     dcb_prm = os.path.join(top, "prm", "benchmarks", "dcb_2d.prm")
     variants = []
     for kink in ["1.43", "2.86", "5.71"]:
-        for advance, levels in [(0.1, 3), (0.05, 3), (0.05, 4), (0.025, 4)]:
-            variants.append((kink, advance, levels))
+        for integration in ["explicit", "predictor-corrector"]:
+            for advance in [0.1, 0.05, 0.025]:
+                variants.append((kink, integration, advance, 5))
+        for integration in ["explicit", "predictor-corrector"]:
+            variants.append((kink, integration, 0.05, 6))
 
     def one(variant):
-        kink, advance, levels = variant
+        kink, integration, advance, levels = variant
         with tempfile.TemporaryDirectory() as work:
             text = (f"include {dcb_prm}\n"
                     f"set Output directory = {os.path.join(work, 'out')}\n"
@@ -173,22 +193,27 @@ def dcb(args):
                     f"    set File name = {top}/prm/cracks/dcb_kink_{kink}.msh\n"
                     "  end\nend\n"
                     f"subsection Propagation\n  set Maximum advance = {advance}\n"
+                    f"  set Direction integration = {integration}\n"
                     "  set Number of steps = 400\nend\n"
                     f"subsection Mesh refinement\n  set Number of meshes = {levels + 1}\n"
                     f"  set Maximum level = {levels}\nend\n")
+            start = time.time()
             run_xcrack(text, work)
-            return variant, tip_path(work)
+            return variant, (tip_path(work), time.time() - start)
 
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-        paths = dict(pool.map(one, variants))
-    print("| theta0 (deg) | advance | front cells | y(4.6) | y(5.0) | y(5.4) |")
-    print("|---|---|---|---|---|---|")
+        results = dict(pool.map(one, variants))
+    print("| theta0 (deg) | direction | advance | front cells h | y(4.6) | "
+          "y(5.0) | y(5.4) | last tip | wall time |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for variant in variants:
-        kink, advance, levels = variant
-        heights = [height_at(paths[variant], x) for x in (4.6, 5.0, 5.4)]
-        print(f"| {kink} | {advance} | {11.8 / 30 / 2 ** levels:.3f} | " +
+        kink, integration, advance, levels = variant
+        path, seconds = results[variant]
+        heights = [height_at(path, x) for x in (4.6, 5.0, 5.4)]
+        print(f"| {kink} | {integration} | {advance} | "
+              f"{11.8 / 30 / 2 ** levels:.4f} | " +
               " | ".join("-" if y is None else f"{y:.3f}" for y in heights) +
-              " |")
+              f" | ({path[-1][0]:.2f}, {path[-1][1]:.2f}) | {seconds:.0f} s |")
     try:
         import matplotlib
         matplotlib.use("Agg")
@@ -197,23 +222,26 @@ def dcb(args):
         return
     fig, ax = plt.subplots(figsize=(6.5, 3.5))
     colours = {"1.43": "C0", "2.86": "C1", "5.71": "C2"}
-    styles = {(0.1, 3): ":", (0.05, 3): "--", (0.05, 4): "-", (0.025, 4): "-."}
-    for variant, path in paths.items():
-        kink, advance, levels = variant
+    styles = {("explicit", 0.025): "--", ("predictor-corrector", 0.1): ":",
+              ("predictor-corrector", 0.025): "-"}
+    for variant, (path, _) in results.items():
+        kink, integration, advance, levels = variant
+        if (integration, advance) not in styles or levels != 5:
+            continue
         ax.plot([p[0] for p in path], [p[1] for p in path],
-                styles[(advance, levels)], color=colours[kink],
-                label=f"{kink} deg, advance {advance}, h {11.8 / 30 / 2 ** levels:.3f}")
+                styles[(integration, advance)], color=colours[kink],
+                label=f"{kink} deg, {integration}, advance {advance}")
     ax.set_xlim(3.9, 6.5)
     ax.set_ylim(-0.1, 1.97)
     ax.set_xlabel("x")
     ax.set_ylabel("y")
-    ax.set_title("DCB: tip paths (beam top at y = 1.97)")
+    ax.set_title(f"DCB: tip paths, front cells h = {11.8 / 30 / 32:.4f} "
+                 "(beam top at y = 1.97)")
     ax.legend(fontsize=6)
     ax.grid(True, lw=0.3)
     fig.tight_layout()
     path = os.path.join(top, "doc", "figures", "dcb_paths.png")
     fig.savefig(path, dpi=120)
-    print(f"\nwrote {path}")
 
 
 def cost(args):
@@ -252,13 +280,59 @@ def cost(args):
         print(f"| total | {total:.3f} | |")
 
 
+def kink(args):
+    dcb_prm = os.path.join(top, "prm", "benchmarks", "dcb_2d.prm")
+    lengths = [0.025, 0.05, 0.1, 0.2, 0.4]
+    levels = 6
+    angle = math.radians(10)
+
+    def one(length):
+        with tempfile.TemporaryDirectory() as work:
+            # The DCB's crack (from x = -0.5 to 3.94 along y = 0) and a kink.
+            points = ([(-0.5, 0.0)] + [(0.5 * i, 0.0) for i in range(8)] +
+                      [(3.94, 0.0), (3.94 + length * math.cos(angle),
+                                     length * math.sin(angle))])
+            mesh = os.path.join(work, "kink.msh")
+            with open(mesh, "w") as f:
+                f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"
+                        f"{len(points)}\n")
+                for i, (x, y) in enumerate(points):
+                    f.write(f"{i + 1} {x!r} {y!r} 0\n")
+                f.write(f"$EndNodes\n$Elements\n{len(points) - 1}\n")
+                for i in range(len(points) - 1):
+                    f.write(f"{i + 1} 1 2 0 1 {i + 1} {i + 2}\n")
+                f.write("$EndElements\n")
+            text = (f"include {dcb_prm}\n"
+                    f"set Output directory = {os.path.join(work, 'out')}\n"
+                    "subsection Output\n  set Timing summary = false\nend\n"
+                    "subsection Cracks\n  subsection Crack 1\n"
+                    f"    set File name = {mesh}\n  end\nend\n"
+                    "subsection Propagation\n  set Number of steps = 0\nend\n"
+                    f"subsection Mesh refinement\n  set Number of meshes = {levels + 1}\n"
+                    f"  set Maximum level = {levels}\nend\n")
+            rows = run_xcrack(text, work)
+            return length, [float(r["K_II_1"]) / float(r["K_I_1"]) for r in rows]
+
+    with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+        ratios = dict(pool.map(one, lengths))
+    shown = range(2, levels + 1)
+    print("| kink length s | " + " | ".join(
+        f"h = {11.8 / 30 / 2 ** level:.4f}" for level in shown) + " |")
+    print("|---|" + "---|" * len(shown))
+    for length in lengths:
+        print(f"| {length} | " + " | ".join(
+            f"{ratios[length][level]:.4f}" for level in shown) + " |")
+
+
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("study", choices=["paris", "advance", "cost", "dcb"])
+    parser.add_argument("study",
+                        choices=["paris", "advance", "cost", "dcb", "kink"])
     parser.add_argument("--jobs", type=int, default=1)
     parser.add_argument("--runs", type=int, default=3)
     args = parser.parse_args()
-    {"paris": paris, "advance": advance, "cost": cost, "dcb": dcb}[args.study](args)
+    {"paris": paris, "advance": advance, "cost": cost, "dcb": dcb,
+     "kink": kink}[args.study](args)
 
 
 if __name__ == "__main__":

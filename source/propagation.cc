@@ -25,8 +25,10 @@ namespace xcrack
         "0",
         Patterns::Double(),
         "The advance of the fastest point of all fronts in one step, in "
-        "length units (> 0 with Number of steps > 0). About one or two "
-        "front cells: the path and the cycles converge as it shrinks.");
+        "length units (> 0 with Number of steps > 0). The cycles and the "
+        "path converge as it shrinks; where the crack turns, keep it at "
+        "least the crowns' outer radius (Fracture parameters/Crown radii): "
+        "a kink shorter than the crowns is read wrong.");
       prm.declare_entry("Load ratio",
                         "0",
                         Patterns::Double(),
