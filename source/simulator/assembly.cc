@@ -1,6 +1,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/hp/fe_values.h>
 
+#include <xcrack/elastic_cell_matrix.h>
 #include <xcrack/input_error.h>
 #include <xcrack/simulator.h>
 #include <xcrack/xfem/cell_quadrature.h>
@@ -44,23 +45,21 @@ namespace xcrack
     const double lambda = material.lambda(dim);
     const double mu     = material.mu();
 
-    hp::FEValues<dim>                hp_fe_values(fe_collection,
+    hp::FEValues<dim>     hp_fe_values(fe_collection,
                                    quadrature_collection,
                                    update_values | update_gradients |
                                      update_quadrature_points |
                                      update_JxW_values);
-    hp::FEFaceValues<dim>            hp_fe_face_values(fe_collection,
+    hp::FEFaceValues<dim> hp_fe_face_values(fe_collection,
                                             face_quadrature_collection,
                                             update_values |
                                               update_quadrature_points |
                                               update_JxW_values);
-    const FEValuesExtractors::Vector displacement(0);
 
     FullMatrix<double>                   cell_matrix;
     Vector<double>                       cell_rhs;
     std::vector<types::global_dof_index> local_dof_indices;
-    std::vector<SymmetricTensor<2, dim>> eps;
-    std::vector<double>                  div;
+    ElasticCellMatrix<dim>               stiffness;
     std::vector<Vector<double>>          load;
     std::unique_ptr<FEValues<dim>>       special_values;
     // The first load that is not finite where it is used, on this rank.
@@ -86,10 +85,7 @@ namespace xcrack
           const FEValues<dim> &fe_values =
             reinit_fe_values(cell, hp_fe_values, special_values, degree + 1);
           const unsigned int n_dofs = fe_values.dofs_per_cell;
-          cell_matrix.reinit(n_dofs, n_dofs);
           cell_rhs.reinit(n_dofs);
-          eps.resize(n_dofs);
-          div.resize(n_dofs);
 
           if (boundary_conditions.body_force)
             {
@@ -101,32 +97,16 @@ namespace xcrack
                     "Boundary conditions/Body force");
             }
 
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
+          stiffness.compute(fe_values, lambda, mu, cell_matrix);
+          if (boundary_conditions.body_force)
+            for (const unsigned int q : fe_values.quadrature_point_indices())
               for (unsigned int i = 0; i < n_dofs; ++i)
                 {
-                  eps[i] = fe_values[displacement].symmetric_gradient(i, q);
-                  div[i] = trace(eps[i]);
+                  const unsigned int c =
+                    fe_values.get_fe().system_to_component_index(i).first;
+                  cell_rhs(i) +=
+                    fe_values.shape_value(i, q) * load[q](c) * fe_values.JxW(q);
                 }
-              const double JxW = fe_values.JxW(q);
-              for (unsigned int i = 0; i < n_dofs; ++i)
-                {
-                  for (unsigned int j = 0; j <= i; ++j)
-                    cell_matrix(i, j) +=
-                      (lambda * div[i] * div[j] + 2. * mu * (eps[i] * eps[j])) *
-                      JxW;
-                  if (boundary_conditions.body_force)
-                    {
-                      const unsigned int c =
-                        fe_values.get_fe().system_to_component_index(i).first;
-                      cell_rhs(i) +=
-                        fe_values.shape_value(i, q) * load[q](c) * JxW;
-                    }
-                }
-            }
-          for (unsigned int i = 0; i < n_dofs; ++i)
-            for (unsigned int j = i + 1; j < n_dofs; ++j)
-              cell_matrix(i, j) = cell_matrix(j, i);
 
           for (const auto &face : cell->face_iterators())
             if (face->at_boundary())
