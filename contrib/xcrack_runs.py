@@ -7,7 +7,10 @@ import subprocess
 import sys
 
 top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-xcrack = os.path.join(top, "build", "release", "xcrack")
+# XCRACK_BINARY runs another build (a baseline copied aside, with its
+# libxcrack_core.so found through LD_LIBRARY_PATH) for before/after studies.
+xcrack = os.environ.get("XCRACK_BINARY",
+                        os.path.join(top, "build", "release", "xcrack"))
 
 
 def run_xcrack(prm_text, work, ranks=1):

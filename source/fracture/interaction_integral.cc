@@ -357,63 +357,77 @@ namespace xcrack
 
 
     /**
-     * Gradient (global components) of the auxiliary field u = u_a(x1, x2)
-     * e_a(s) at local coordinates @p xl, polar (@p r, @p angle), of the
-     * front frame at the projection: the plane Williams gradient rotated,
-     * plus, along a curved 3D front, the turning of the frame,
-     * u_a de_a/ds (x) grad s with grad s = e3 / (1 + x1 de1/ds . e3 + x2
-     * de2/ds . e3). Without that term the auxiliary strain is not the
-     * strain of any displacement and K along a circle of radius rho is off
-     * by about r_sup / rho (7 % for crowns of 4 cells of 1/16 on the unit
-     * penny).
+     * Gradients (global components) of the auxiliary fields u = u_a(x1, x2)
+     * e_a(s) of unit K_I, K_II (, K_III) at local coordinates @p xl, polar
+     * (@p r, @p angle), of the front frame at the projection: the plane
+     * Williams gradient rotated, plus, along a curved 3D front, the turning
+     * of the frame, u_a de_a/ds (x) grad s with grad s = e3 / (1 + x1
+     * de1/ds . e3 + x2 de2/ds . e3). Without that term the auxiliary strain
+     * is not the strain of any displacement and K along a circle of radius
+     * rho is off by about r_sup / rho (7 % for crowns of 4 cells of 1/16 on
+     * the unit penny). @p unit gives mu and kappa.
      */
-    template <int dim>
-    Tensor<2, dim>
-    aux_gradient(const WilliamsField                        &field,
-                 const typename FrontCurve<dim>::Projection &projection,
-                 const Tensor<1, dim>                       &xl,
-                 const double                                r,
-                 const double                                angle)
+    template <int dim, int n_modes>
+    void
+    aux_gradients(const WilliamsField                        &unit,
+                  const typename FrontCurve<dim>::Projection &projection,
+                  const Tensor<1, dim>                       &xl,
+                  const double                                r,
+                  const double                                angle,
+                  Tensor<2, dim> (&gradients)[n_modes])
     {
+      Tensor<1, 3> u[3];
+      Tensor<2, 3> local[3];
+      unit.unit_modes(r, angle, u, local);
       const Tensor<2, dim> &R = projection.R;
-      Tensor<2, dim>        gradient =
-        transpose(R) * block<dim>(field.displacement_gradient(r, angle)) * R;
-      if constexpr (dim == 3)
+      for (unsigned int m = 0; m < n_modes; ++m)
         {
-          const Tensor<1, 3> u   = field.displacement(r, angle);
-          const Tensor<1, 3> e3  = R[2];
-          const double       h_s = 1 + xl[0] * (projection.dR[0] * e3) +
-                             xl[1] * (projection.dR[1] * e3);
-          for (unsigned int a = 0; a < 3; ++a)
-            gradient += (u[a] / h_s) * outer_product(projection.dR[a], e3);
+          gradients[m] = transpose(R) * block<dim>(local[m]) * R;
+          if constexpr (dim == 3)
+            {
+              const Tensor<1, 3> e3  = R[2];
+              const double       h_s = 1 + xl[0] * (projection.dR[0] * e3) +
+                                 xl[1] * (projection.dR[1] * e3);
+              for (unsigned int a = 0; a < 3; ++a)
+                gradients[m] +=
+                  (u[m][a] / h_s) * outer_product(projection.dR[a], e3);
+            }
         }
-      return gradient;
     }
 
 
 
     /**
-     * Divergence of the auxiliary stresses of @p fields (K_I, K_II, K_III
-     * = 1) at @p x, by central differences of C : eps(u^aux) over a step
-     * 1e-4 r. The Williams fields extend smoothly across the lips, so the
-     * angle of a shifted point is taken on the branch of @p angle, that of
-     * x itself.
+     * Divergence of the auxiliary stresses of the unit fields (K_I, K_II,
+     * K_III = 1; @p unit gives mu and kappa) at @p x, whose projection on
+     * the front is @p base, by central differences of C : eps(u^aux) over
+     * a step 1e-4 r. The Williams fields extend smoothly across the lips,
+     * so the angle of a shifted point is taken on the branch of @p angle,
+     * that of x itself.
+     *
+     * The step is not a free choice: on the concave side of a vertex of
+     * the front polyline the nearest foot jumps from one segment to the
+     * next across the bisector, and the auxiliary fields with it; the few
+     * points within a step of such a plane read the jump as a divergence
+     * of order 1 / step, a sampled stand-in for the jump term that the
+     * integral lacks. doc/verification.md ("The divergence term") measures
+     * what other steps do to K.
      */
     template <int dim, int n_modes>
     void
-    aux_stress_divergence(const WilliamsField (&fields)[n_modes],
-                          const FrontCurve<dim> &curve,
-                          const Point<dim>      &x,
-                          const double           angle,
-                          const unsigned int     first,
-                          const unsigned int     last,
+    aux_stress_divergence(const WilliamsField                        &unit,
+                          const FrontCurve<dim>                      &curve,
+                          const Point<dim>                           &x,
+                          const typename FrontCurve<dim>::Projection &base,
+                          const double                                angle,
+                          const unsigned int                          first,
+                          const unsigned int                          last,
                           Tensor<1, dim> (&divergence)[n_modes])
     {
-      const auto   base   = curve.project(x, first, last);
       const double r      = (base.R * (x - base.foot)).norm();
       const double delta  = 1e-4 * r;
-      const double mu     = fields[0].mu,
-                   lambda = mu * (3 - fields[0].kappa) / (fields[0].kappa - 1);
+      const double mu     = unit.mu,
+                   lambda = mu * (3 - unit.kappa) / (unit.kappa - 1);
       for (unsigned int m = 0; m < n_modes; ++m)
         divergence[m] = Tensor<1, dim>();
       for (unsigned int j = 0; j < dim; ++j)
@@ -428,12 +442,12 @@ namespace xcrack
               a -= 2 * numbers::PI;
             else if (a - angle < -numbers::PI)
               a += 2 * numbers::PI;
-            const double ry = std::hypot(yl[0], yl[1]);
+            const double   ry = std::hypot(yl[0], yl[1]);
+            Tensor<2, dim> g[n_modes];
+            aux_gradients<dim, n_modes>(unit, projection, yl, ry, a, g);
             for (unsigned int m = 0; m < n_modes; ++m)
               {
-                const Tensor<2, dim> g =
-                  aux_gradient(fields[m], projection, yl, ry, a);
-                const SymmetricTensor<2, dim> eps = symmetrize(g);
+                const SymmetricTensor<2, dim> eps = symmetrize(g[m]);
                 // sigma_ij,j: only column j of sigma(y) matters here.
                 for (unsigned int i = 0; i < dim; ++i)
                   divergence[m][i] +=
@@ -469,16 +483,9 @@ namespace xcrack
     constexpr unsigned int n_modes = (dim == 3 ? 3 : 2);
     // Integrals per test function: I for each mode, then G.
     constexpr unsigned int n_integrals = n_modes + 1;
-    WilliamsField          aux[n_modes];
-    for (unsigned int m = 0; m < n_modes; ++m)
-      {
-        aux[m].mu    = material.mu();
-        aux[m].kappa = material.kappa(dim);
-      }
-    aux[0].k_I  = 1;
-    aux[1].k_II = 1;
-    if constexpr (dim == 3)
-      aux[2].k_III = 1;
+    WilliamsField          unit;
+    unit.mu    = material.mu();
+    unit.kappa = material.kappa(dim);
     const FEValuesExtractors::Vector displacement(0);
     const MappingQ1<dim>             mapping;
     constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
@@ -726,10 +733,10 @@ namespace xcrack
                     // T_kj with I = int T_kj theta_k,j.
                     Tensor<2, dim> T[n_integrals];
                     Tensor<2, dim> du_aux[n_modes];
+                    aux_gradients<dim, n_modes>(
+                      unit, projection, xl, r, angle, du_aux);
                     for (unsigned int m = 0; m < n_modes; ++m)
                       {
-                        du_aux[m] =
-                          aux_gradient(aux[m], projection, xl, r, angle);
                         const SymmetricTensor<2, dim> eps_aux =
                           symmetrize(du_aux[m]);
                         const SymmetricTensor<2, dim> sigma_aux =
@@ -771,8 +778,14 @@ namespace xcrack
                     if constexpr (dim == 3)
                       {
                         Tensor<1, dim> div_aux[n_modes];
-                        aux_stress_divergence(
-                          aux, curve, x, angle, first, last, div_aux);
+                        aux_stress_divergence<dim, n_modes>(unit,
+                                                            curve,
+                                                            x,
+                                                            projection,
+                                                            angle,
+                                                            first,
+                                                            last,
+                                                            div_aux);
                         for (const unsigned int j : active_tests)
                           {
                             const Tensor<1, dim> du_theta =
@@ -826,11 +839,14 @@ namespace xcrack
                 // points to it, else at -pi (the start tip of a segment).
                 const double angle_plus =
                   ((R * n_ds)[1] > 0 ? 1. : -1.) * numbers::PI;
+                Tensor<2, dim> plus[n_modes], minus[n_modes];
+                aux_gradients<dim, n_modes>(
+                  unit, projection, xl, r, angle_plus, plus);
+                aux_gradients<dim, n_modes>(
+                  unit, projection, xl, r, -angle_plus, minus);
                 Tensor<2, dim> jump[n_integrals];
                 for (unsigned int m = 0; m < n_modes; ++m)
-                  jump[m] =
-                    aux_gradient(aux[m], projection, xl, r, angle_plus) -
-                    aux_gradient(aux[m], projection, xl, r, -angle_plus);
+                  jump[m] = plus[m] - minus[m];
                 jump[n_modes] = grad_u[2 * k] - grad_u[2 * k + 1];
                 for (const unsigned int j : active_tests)
                   {
@@ -843,13 +859,9 @@ namespace xcrack
                   for (unsigned int m = 0; m < n_modes; ++m)
                     {
                       const Tensor<1, dim> t_plus =
-                        material.stress<dim>(symmetrize(aux_gradient(
-                          aux[m], projection, xl, r, angle_plus))) *
-                        n_ds;
+                        material.stress<dim>(symmetrize(plus[m])) * n_ds;
                       const Tensor<1, dim> t_minus =
-                        material.stress<dim>(symmetrize(aux_gradient(
-                          aux[m], projection, xl, r, -angle_plus))) *
-                        n_ds;
+                        material.stress<dim>(symmetrize(minus[m])) * n_ds;
                       for (const unsigned int j : active_tests)
                         {
                           const Tensor<1, dim> theta = theta_at(points[k], j);

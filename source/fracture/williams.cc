@@ -50,6 +50,50 @@ namespace xcrack
 
 
 
+  void
+  WilliamsField::unit_modes(const double r,
+                            const double theta,
+                            Tensor<1, 3> (&u)[3],
+                            Tensor<2, 3> (&grad)[3]) const
+  {
+    const double g = std::sqrt(r / (2 * numbers::PI));
+    const double f = g / (2 * mu);
+    const double c = std::cos(theta / 2), s = std::sin(theta / 2);
+    const double ct = std::cos(theta), st = std::sin(theta);
+
+    // The expressions of displacement() and displacement_gradient() with
+    // one K equal to 1 and the terms of the others (exact zeros) left out.
+    Tensor<1, 3> du_dtheta[3];
+    for (unsigned int m = 0; m < 3; ++m)
+      {
+        u[m]         = Tensor<1, 3>();
+        du_dtheta[m] = Tensor<1, 3>();
+      }
+    u[0][0]         = f * (c * (kappa - ct));
+    u[0][1]         = f * (s * (kappa - ct));
+    du_dtheta[0][0] = f * (-0.5 * s * (kappa - ct) + c * st);
+    du_dtheta[0][1] = f * (0.5 * c * (kappa - ct) + s * st);
+    u[1][0]         = f * (s * (kappa + 2 + ct));
+    u[1][1]         = f * (-(c * (kappa - 2 + ct)));
+    du_dtheta[1][0] = f * (0.5 * c * (kappa + 2 + ct) - s * st);
+    du_dtheta[1][1] = f * (0.5 * s * (kappa - 2 + ct) + c * st);
+    u[2][2]         = 2. / mu * g * s;
+    du_dtheta[2][2] = 2. / mu * g * 0.5 * c;
+
+    for (unsigned int m = 0; m < 3; ++m)
+      {
+        grad[m] = Tensor<2, 3>();
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            const double du_dr = u[m][i] / (2 * r);
+            grad[m][i][0]      = ct * du_dr - st / r * du_dtheta[m][i];
+            grad[m][i][1]      = st * du_dr + ct / r * du_dtheta[m][i];
+          }
+      }
+  }
+
+
+
   SymmetricTensor<2, 3>
   WilliamsField::stress(const double r, const double theta) const
   {

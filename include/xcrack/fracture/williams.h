@@ -38,6 +38,20 @@ namespace xcrack
     Tensor<2, 3>
     displacement_gradient(const double r, const double theta) const;
 
+    /**
+     * The displacements and gradients of the three unit fields (K_I = 1,
+     * K_II = 1, K_III = 1 in turn, this field's mu and kappa; its K's are
+     * not used), with the trigonometric functions evaluated once: the
+     * interaction integral needs all three at every point of its domain.
+     * The values equal those of displacement() and displacement_gradient()
+     * to the last bit.
+     */
+    void
+    unit_modes(const double r,
+               const double theta,
+               Tensor<1, 3> (&u)[3],
+               Tensor<2, 3> (&grad)[3]) const;
+
     /// In-plane stresses (s11, s22, s12) and the antiplane (s13, s23) as a
     /// 3D tensor; s33 is left zero (it depends on the plane model).
     SymmetricTensor<2, 3>
