@@ -19,7 +19,7 @@ rate against the front cell size h). `trade`: on the penny's last mesh,
 one knob at a time against the shipped choice (crowns 2-4 cells, Legendre
 degree 5, 6 tip quadrature points): the crowns (their independence: the
 front-averaged K_I against the baseline's), the basis and its size, the
-tip rule; with the wall time of the extraction. `--jobs 2` runs two
+tip rule, the near-front rule; with the wall time of the extraction. `--jobs 2` runs two
 choices at once (one core each); the times are then those of a loaded
 machine, compared with the baseline run under the same load.
 """
@@ -210,7 +210,10 @@ def trade(args):
                                "  set Tip quadrature points = 3\n"}),
         ("tip rule 10 points", {"fracture": base, "enrichment":
                                 "  set Tip quadrature points = 10\n"}),
-    ]
+    ] + [(f"near-front cells: Gauss {n}^3", {
+        "fracture": base,
+        "enrichment": f"  set Near-front quadrature points = {n}\n"})
+         for n in (4, 6, 8)]
     results = run_choices(choices, args.meshes, args.jobs)
     rows0, k0 = results[choices[0][0]]
     mean0 = statistics.fmean(k0)

@@ -103,6 +103,16 @@ namespace xcrack
         "stiffness integrands are smooth in the fan's graded coordinates, "
         "so a few points suffice; raise it to check.");
       prm.declare_entry(
+        "Near-front quadrature points",
+        "0",
+        Patterns::Integer(0, 20),
+        "Cells within a cell diameter of the front that it does not touch "
+        "and that carry the branch functions alone: 0 integrates them with "
+        "the tip rule (its fan from the nearest front point, several hundred "
+        "points per cell in 3D); n > 0 with n^dim Gauss points, cheaper, "
+        "less accurate where the front passes close to the cell (the trade "
+        "is measured in doc/performance.md).");
+      prm.declare_entry(
         "Gather tip DoFs",
         "false",
         Patterns::Bool(),
@@ -140,8 +150,10 @@ namespace xcrack
                                                           TipZone::geometric);
     radius                     = prm.get_double("Enrichment radius");
     tip_quadrature_points      = prm.get_integer("Tip quadrature points");
-    gather                     = prm.get_bool("Gather tip DoFs");
-    gather_segment             = prm.get_double("Gather segment length");
+    near_front_quadrature_points =
+      prm.get_integer("Near-front quadrature points");
+    gather         = prm.get_bool("Gather tip DoFs");
+    gather_segment = prm.get_double("Gather segment length");
     prm.leave_subsection();
     const auto text = [](const double x) {
       std::ostringstream s;
@@ -1463,9 +1475,17 @@ namespace xcrack
       return nullptr;
     // Split cells with branch functions integrate them as finely as tip
     // cells: a low-order rule would leave their many DoFs underintegrated
-    // (spurious zero-energy modes).
+    // (spurious zero-energy modes). Cells near the front that it does not
+    // touch and that carry the branch functions alone may take a Gauss
+    // rule (Near-front quadrature points): their integrands are smooth, if
+    // steep where the front passes close.
+    const bool gauss_near = kind == CellKind::plain &&
+                            cell->active_fe_index() == tip &&
+                            parameters.near_front_quadrature_points > 0;
     const unsigned int n =
-      (kind == CellKind::tip || near || cell->active_fe_index() >= tip ?
+      (gauss_near ?
+         std::max(n_points_1d, parameters.near_front_quadrature_points) :
+       kind == CellKind::tip || near || cell->active_fe_index() >= tip ?
          std::max(n_points_1d, parameters.tip_quadrature_points) :
          n_points_1d);
     // The cache key combines cell and order: assembly and error evaluation
@@ -1478,7 +1498,9 @@ namespace xcrack
     const unsigned int        c   = crack_index(cell);
     const std::vector<double> lsn = vertex_values(cell, c, true);
     Quadrature<dim>           rule;
-    if (kind == CellKind::split && !near)
+    if (gauss_near)
+      rule = QGauss<dim>(n);
+    else if (kind == CellKind::split && !near)
       rule = CellQuadrature::cut_cell_rule<dim>(lsn, n).first;
     else
       rule = CellQuadrature::tip_cell_rule<dim>(lsn,

@@ -76,7 +76,10 @@ namespace xcrack
     TipZone      tip_zone              = TipZone::topological;
     double       radius                = 0;
     unsigned int tip_quadrature_points = 6;
-    bool         gather                = false;
+    /// Gauss points per direction in the branch-only cells near the front
+    /// that it does not touch (0: the tip rule there too).
+    unsigned int near_front_quadrature_points = 0;
+    bool         gather                       = false;
     /// Gathering: master spacing along a 3D front, in multiples of the
     /// largest tip cell's diameter.
     double gather_segment = 2;
