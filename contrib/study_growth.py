@@ -144,7 +144,6 @@ def tip_path(work):
     tips, the one nearest to the previous step's)."""
     import csv
     import glob
-    import math
     import re
     tips = {}
     for path in glob.glob(os.path.join(work, "out", "front_*.csv")):

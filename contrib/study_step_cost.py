@@ -36,18 +36,9 @@ def run(binary, meshes, ranks, work):
             "subsection Output\n  set Timing summary = false\nend\n"
             "subsection Linear solver\n  set Type = direct\nend\n"
             f"subsection Mesh refinement\n  set Number of meshes = {meshes}\nend\n")
-    saved = (xcrack_runs.xcrack, os.environ.get("LD_LIBRARY_PATH"))
-    if binary:
-        xcrack_runs.xcrack = os.path.join(binary, "xcrack")
-        os.environ["LD_LIBRARY_PATH"] = binary
-    try:
-        return xcrack_runs.run_xcrack(text, work, ranks)[-1]
-    finally:
-        xcrack_runs.xcrack = saved[0]
-        if saved[1] is None:
-            os.environ.pop("LD_LIBRARY_PATH", None)
-        else:
-            os.environ["LD_LIBRARY_PATH"] = saved[1]
+    return xcrack_runs.run_xcrack(
+        text, work, ranks,
+        binary=os.path.join(binary, "xcrack") if binary else None)[-1]
 
 
 def main():

@@ -7,15 +7,15 @@ import subprocess
 import sys
 
 top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-# XCRACK_BINARY runs another build (a baseline copied aside, with its
-# libxcrack_core.so found through LD_LIBRARY_PATH) for before/after studies.
-xcrack = os.environ.get("XCRACK_BINARY",
-                        os.path.join(top, "build", "release", "xcrack"))
+xcrack = os.path.join(top, "build", "release", "xcrack")
 
 
-def run_xcrack(prm_text, work, ranks=1):
+def run_xcrack(prm_text, work, ranks=1, binary=None):
     """Write prm_text (its output directory must be work/out) to work/run.prm,
-    run xcrack on `ranks` MPI ranks and return the rows of statistics.csv."""
+    run xcrack on `ranks` MPI ranks and return the rows of statistics.csv.
+    `binary` (or the environment's XCRACK_BINARY, for any study): another
+    build's xcrack, its libxcrack_core.so beside it, for before/after
+    comparisons."""
     prm = os.path.join(work, "run.prm")
     with open(prm, "w") as f:
         f.write(prm_text)
@@ -23,7 +23,10 @@ def run_xcrack(prm_text, work, ranks=1):
     # not compete for the cores.
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
                OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OPENBLAS_NUM_THREADS="1")
-    command = [xcrack, prm]
+    binary = binary or os.environ.get("XCRACK_BINARY")
+    if binary:
+        env["LD_LIBRARY_PATH"] = os.path.dirname(os.path.abspath(binary))
+    command = [binary or xcrack, prm]
     if ranks > 1:
         command = ["mpirun", "-np", str(ranks)] + command
     subprocess.run(command, check=True, env=env, stdout=subprocess.DEVNULL)

@@ -36,7 +36,7 @@ namespace xcrack
                 ExcMessage("ElasticCellMatrix needs a primitive element "
                            "with one component per space dimension."));
 
-    std::vector<unsigned int> component(n_dofs);
+    component.resize(n_dofs);
     for (unsigned int i = 0; i < n_dofs; ++i)
       component[i] = fe.system_to_component_index(i).first;
 

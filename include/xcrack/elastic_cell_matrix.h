@@ -54,6 +54,9 @@ namespace xcrack
     /// Strain rows per point in Mandel notation.
     static constexpr unsigned int n_strains = dim * (dim + 1) / 2;
 
+    /// The displacement component of each shape function.
+    std::vector<unsigned int> component;
+
     /// Column-major blocks: strains (n_strains rows per point) and
     /// divergences (one row per point), both times sqrt(w_q).
     std::vector<double> strains;

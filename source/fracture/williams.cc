@@ -9,14 +9,10 @@ namespace xcrack
   Tensor<1, 3>
   WilliamsField::displacement(const double r, const double theta) const
   {
-    const double f = std::sqrt(r / (2 * numbers::PI)) / (2 * mu);
-    const double c = std::cos(theta / 2), s = std::sin(theta / 2);
-    const double ct = std::cos(theta);
-    Tensor<1, 3> u;
-    u[0] = f * (k_I * c * (kappa - ct) + k_II * s * (kappa + 2 + ct));
-    u[1] = f * (k_I * s * (kappa - ct) - k_II * c * (kappa - 2 + ct));
-    u[2] = 2 * k_III / mu * std::sqrt(r / (2 * numbers::PI)) * s;
-    return u;
+    Tensor<1, 3> u[3];
+    Tensor<2, 3> grad[3];
+    unit_modes(r, theta, u, grad);
+    return k_I * u[0] + k_II * u[1] + k_III * u[2];
   }
 
 
@@ -24,28 +20,10 @@ namespace xcrack
   Tensor<2, 3>
   WilliamsField::displacement_gradient(const double r, const double theta) const
   {
-    const double g = std::sqrt(r / (2 * numbers::PI));
-    const double f = g / (2 * mu);
-    const double c = std::cos(theta / 2), s = std::sin(theta / 2);
-    const double ct = std::cos(theta), st = std::sin(theta);
-
-    // u = f(r) a(theta): d/dr = u / (2 r), d/dtheta = f a'(theta).
-    const Tensor<1, 3> u = displacement(r, theta);
-    Tensor<1, 3>       du_dtheta;
-    du_dtheta[0] = f * (k_I * (-0.5 * s * (kappa - ct) + c * st) +
-                        k_II * (0.5 * c * (kappa + 2 + ct) - s * st));
-    du_dtheta[1] = f * (k_I * (0.5 * c * (kappa - ct) + s * st) +
-                        k_II * (0.5 * s * (kappa - 2 + ct) + c * st));
-    du_dtheta[2] = 2 * k_III / mu * g * 0.5 * c;
-
-    Tensor<2, 3> grad;
-    for (unsigned int i = 0; i < 3; ++i)
-      {
-        const double du_dr = u[i] / (2 * r);
-        grad[i][0]         = ct * du_dr - st / r * du_dtheta[i];
-        grad[i][1]         = st * du_dr + ct / r * du_dtheta[i];
-      }
-    return grad;
+    Tensor<1, 3> u[3];
+    Tensor<2, 3> grad[3];
+    unit_modes(r, theta, u, grad);
+    return k_I * grad[0] + k_II * grad[1] + k_III * grad[2];
   }
 
 
@@ -61,8 +39,7 @@ namespace xcrack
     const double c = std::cos(theta / 2), s = std::sin(theta / 2);
     const double ct = std::cos(theta), st = std::sin(theta);
 
-    // The expressions of displacement() and displacement_gradient() with
-    // one K equal to 1 and the terms of the others (exact zeros) left out.
+    // u = f(r) a(theta): d/dr = u / (2 r), d/dtheta = f a'(theta).
     Tensor<1, 3> du_dtheta[3];
     for (unsigned int m = 0; m < 3; ++m)
       {

@@ -43,8 +43,8 @@ namespace xcrack
      * K_II = 1, K_III = 1 in turn, this field's mu and kappa; its K's are
      * not used), with the trigonometric functions evaluated once: the
      * interaction integral needs all three at every point of its domain.
-     * The values equal those of displacement() and displacement_gradient()
-     * to the last bit.
+     * displacement() and displacement_gradient() combine them with this
+     * field's K's.
      */
     void
     unit_modes(const double r,

@@ -1,0 +1,231 @@
+#ifndef xcrack_fracture_front_curve_h
+#define xcrack_fracture_front_curve_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <xcrack/crack/crack_geometry.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace xcrack
+{
+  using namespace dealii;
+
+  /**
+   * A front as a polyline through its points, with a frame that varies
+   * continuously along it: where a point x projects (abscissa s), the
+   * frame there (the auxiliary fields and theta live in it) and the
+   * derivative of that frame along s, which makes the auxiliary fields of
+   * a curved front compatible (see InteractionIntegral).
+   *
+   * The frame at s (frame_at): e2 the normals of the points interpolated
+   * linearly in s, e3 the chord of the polyline over [s - step, s +
+   * step], e1 = e2 x e3; its derivative along s is a central difference
+   * over the same @p step, a length a few cells long (half the crown):
+   * the frames of the extracted points come from level-set gradients and
+   * tilt by O(h) from point to point, so the derivative must average over
+   * several segments.
+   */
+  template <int dim>
+  class FrontCurve
+  {
+  public:
+    struct Projection
+    {
+      double     s = 0;
+      Point<dim> foot;
+      /// Rows e1, e2 (, e3): global to local components.
+      Tensor<2, dim> R;
+      /// d R / d s (zero in 2D).
+      Tensor<2, dim> dR;
+      /// Open front and x beyond one of its ends.
+      bool at_end = false;
+    };
+
+    FrontCurve(const std::vector<FrontPoint<dim>> &points, const double step)
+      : points(points)
+      , closed(points.size() > 2 &&
+               points.front().position == points.back().position)
+      , length(points.back().s)
+      , step(std::min(step, 0.25 * points.back().s))
+    {}
+
+    /// Projection of @p x on the segments @p first to @p last - 1 (on
+    /// all by default; a single point in 2D): the nearest point, which on
+    /// the concave side of a vertex jumps from one segment to the next
+    /// across the bisector (doc/verification.md, "The divergence term").
+    Projection
+    project(const Point<dim>  &x,
+            const unsigned int first = 0,
+            unsigned int       last  = numbers::invalid_unsigned_int) const
+    {
+      Projection result;
+      if (points.size() == 1)
+        {
+          result.foot = points[0].position;
+          result.R    = frame_at(0);
+          return result;
+        }
+      last                = std::min<unsigned int>(last, points.size() - 1);
+      double       best   = std::numeric_limits<double>::max();
+      unsigned int best_i = first;
+      double       best_t = 0;
+      for (unsigned int i = first; i < last; ++i)
+        {
+          const Tensor<1, dim> ab = points[i + 1].position - points[i].position;
+          const double         t =
+            std::clamp(((x - points[i].position) * ab) / (ab * ab), 0., 1.);
+          const double d = (x - (points[i].position + t * ab)).norm_square();
+          if (d < best)
+            {
+              best   = d;
+              best_i = i;
+              best_t = t;
+            }
+        }
+      const FrontPoint<dim> &a = points[best_i];
+      const FrontPoint<dim> &b = points[best_i + 1];
+      result.foot   = a.position + best_t * (b.position - a.position);
+      result.s      = a.s + best_t * (b.s - a.s);
+      result.at_end = !closed && ((best_i == 0 && best_t == 0) ||
+                                  (best_i + 2 == points.size() && best_t == 1));
+      result.R      = frame_at(result.s);
+      if (dim == 3 && step > 0)
+        {
+          double s_minus = result.s - step, s_plus = result.s + step;
+          if (!closed)
+            {
+              s_minus = std::max(s_minus, 0.);
+              s_plus  = std::min(s_plus, length);
+            }
+          result.dR =
+            (frame_at(s_plus) - frame_at(s_minus)) / (s_plus - s_minus);
+        }
+      return result;
+    }
+
+    /// Distance of the segments @p i to @p x.
+    double
+    segment_distance(const unsigned int i, const Point<dim> &x) const
+    {
+      const Tensor<1, dim> ab = points[i + 1].position - points[i].position;
+      const double         t =
+        std::clamp(((x - points[i].position) * ab) / (ab * ab), 0., 1.);
+      return (x - (points[i].position + t * ab)).norm();
+    }
+
+    /// The front point (position and frame) at abscissa @p s.
+    FrontPoint<dim>
+    at(const double s) const
+    {
+      if (points.size() == 1)
+        return points[0];
+      const unsigned int     i = segment_of(s);
+      const FrontPoint<dim> &a = points[i];
+      const FrontPoint<dim> &b = points[i + 1];
+      const double           t = std::clamp((s - a.s) / (b.s - a.s), 0., 1.);
+      const Tensor<2, dim>   R = frame_at(s);
+      FrontPoint<dim>        point;
+      point.position = a.position + t * (b.position - a.position);
+      point.s        = s;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          point.e1[d] = R[0][d];
+          point.e2[d] = R[1][d];
+          if constexpr (dim == 3)
+            point.e3[d] = R[2][d];
+        }
+      return point;
+    }
+
+    const std::vector<FrontPoint<dim>> &points;
+    const bool                          closed;
+    const double                        length;
+
+  private:
+    /// The segment holding abscissa @p s (in [0, length]).
+    unsigned int
+    segment_of(const double s) const
+    {
+      const auto it =
+        std::upper_bound(points.begin(),
+                         points.end(),
+                         s,
+                         [](const double value, const FrontPoint<dim> &p) {
+                           return value < p.s;
+                         });
+      const unsigned int i =
+        (it == points.begin() ? 0 : it - points.begin() - 1);
+      return std::min<unsigned int>(i, points.size() - 2);
+    }
+
+    /// The point of the polyline at abscissa @p s (wrapped on a closed
+    /// front, clamped to the ends of an open one).
+    Point<dim>
+    position_at(double s) const
+    {
+      if (closed)
+        s -= length * std::floor(s / length);
+      s                        = std::clamp(s, 0., length);
+      const unsigned int     i = segment_of(s);
+      const FrontPoint<dim> &a = points[i];
+      const FrontPoint<dim> &b = points[i + 1];
+      const double           t = std::clamp((s - a.s) / (b.s - a.s), 0., 1.);
+      return a.position + t * (b.position - a.position);
+    }
+
+    /**
+     * Rows e1, e2 (, e3) at abscissa @p s. e2 is the normal of the points
+     * interpolated; in 3D e3 is the chord of the polyline from s - step
+     * to s + step (the frames of the extracted points come from Q1
+     * level-set gradients and tilt by O(h) from point to point, the
+     * positions are within O(h^2) of the front: the chord gives a
+     * tangent whose derivative along s is the curvature, not noise).
+     */
+    Tensor<2, dim>
+    frame_at(double s) const
+    {
+      Tensor<1, dim> e1 = points[0].e1, e2 = points[0].e2;
+      if (points.size() > 1)
+        {
+          if (closed)
+            s -= length * std::floor(s / length);
+          const unsigned int     i = segment_of(s);
+          const FrontPoint<dim> &a = points[i];
+          const FrontPoint<dim> &b = points[i + 1];
+          const double t = std::clamp((s - a.s) / (b.s - a.s), 0., 1.);
+          e2             = (1 - t) * a.e2 + t * b.e2;
+          e2 /= e2.norm();
+          if constexpr (dim == 3)
+            {
+              const double   half = std::max(step, 1e-3 * length);
+              Tensor<1, dim> e3 = position_at(s + half) - position_at(s - half);
+              e3 -= (e3 * e2) * e2;
+              e3 /= e3.norm();
+              e1 = cross_product_3d(e2, e3);
+            }
+        }
+      Tensor<2, dim> R;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          R[0][d] = e1[d];
+          R[1][d] = e2[d];
+        }
+      if constexpr (dim == 3)
+        {
+          const Tensor<1, dim> e3 = cross_product_3d(e1, e2);
+          for (unsigned int d = 0; d < dim; ++d)
+            R[2][d] = e3[d];
+        }
+      return R;
+    }
+
+    const double step;
+  };
+} // namespace xcrack
+
+#endif
