@@ -8,7 +8,11 @@
 // - a semi-elliptical surface crack: one open front from one face of the
 //   body to the same face, ends on it;
 // - a 2D edge crack: one tip, exactly where it is, with e1 along the crack
-//   and e2 turned by +90 degrees; lip length exact.
+//   and e2 turned by +90 degrees; lip length exact;
+// - a straight front along a row of cell edges, the cells on one side of
+//   half of it refined (adaptive refinement does this): the coarse cells'
+//   segments pass through hanging nodes, and the front stays one front,
+//   straight from face to face.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -178,6 +182,41 @@ check_edge_crack_2d()
   logfile << ", lip length " << surface.measure() << std::endl;
 }
 
+void
+check_front_along_edges()
+{
+  logfile << "Half plane y = 0, x < 0 in [-1,1]^3, front along cell edges, "
+             "refined on one side of half of it"
+          << std::endl;
+  const CrackSet<3> cracks = make_cracks<3>(
+    "  set Shape = half plane\n  set Center = 0, 0, 0\n"
+    "  set Normal = 0, 1, 0\n  set In-plane direction = 1, 0, 0\n");
+  parallel::distributed::Triangulation<3> mesh(MPI_COMM_WORLD);
+  GridGenerator::subdivided_hyper_cube(mesh, 4, -1, 1);
+  for (const auto &cell : mesh.active_cell_iterators())
+    if (cell->is_locally_owned() && cell->center()[0] > 0 &&
+        cell->center()[1] > 0 && cell->center()[2] > 0)
+      cell->set_refine_flag();
+  mesh.execute_coarsening_and_refinement();
+  LevelSetFields<3> level_sets(mesh);
+  CrackSurface<3>   surface;
+  level_sets.initialize(cracks.shapes());
+  surface.extract(level_sets, 0);
+  const auto &fronts = surface.fronts();
+  logfile << fronts.size() << " front(s)";
+  if (fronts.size() == 1)
+    {
+      bool on_line = true;
+      for (const auto &p : fronts[0])
+        on_line = on_line && std::hypot(p.position[0], p.position[1]) < 1e-12;
+      logfile << ", " << fronts[0].size() << " points on x = y = 0 "
+              << yes(on_line) << ", from z = " << fronts[0].front().position[2]
+              << " to z = " << fronts[0].back().position[2] << ", length "
+              << fronts[0].back().s;
+    }
+  logfile << std::endl;
+}
+
 int
 main(int argc, char **argv)
 {
@@ -187,4 +226,5 @@ main(int argc, char **argv)
   check_penny();
   check_surface_crack();
   check_edge_crack_2d();
+  check_front_along_edges();
 }

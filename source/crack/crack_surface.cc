@@ -393,11 +393,33 @@ namespace xcrack
       }
 
     // Chain the segments (each counted once) into fronts.
+    // A front along an edge of a cell whose neighbours are finer passes
+    // through their hanging node: the coarse cell's segment is cut at the
+    // nodes on it, or the chain would fork there (a triangle of segments).
     std::set<std::pair<unsigned int, unsigned int>> edges;
-    for (const auto &[a, b] : segments)
-      if (node_of[a] != node_of[b])
-        edges.emplace(std::min(node_of[a], node_of[b]),
-                      std::max(node_of[a], node_of[b]));
+    for (const auto &[i, j] : segments)
+      {
+        const unsigned int a = node_of[i], b = node_of[j];
+        if (a == b)
+          continue;
+        const Point<dim>    &xa = position[representative[a]];
+        const Tensor<1, dim> ab = position[representative[b]] - xa;
+        std::vector<std::pair<double, unsigned int>> on_segment{{0., a},
+                                                                {1., b}};
+        for (unsigned int c = 0; c < n_nodes; ++c)
+          if (c != a && c != b)
+            {
+              const Tensor<1, dim> ac = position[representative[c]] - xa;
+              const double         t  = ac * ab / ab.norm_square();
+              if (t > 0 && t < 1 && (ac - t * ab).norm() <= tolerance)
+                on_segment.emplace_back(t, c);
+            }
+        std::sort(on_segment.begin(), on_segment.end());
+        for (unsigned int k = 0; k + 1 < on_segment.size(); ++k)
+          edges.emplace(
+            std::min(on_segment[k].second, on_segment[k + 1].second),
+            std::max(on_segment[k].second, on_segment[k + 1].second));
+      }
     for (const auto &chain : chain_edges(n_nodes, {edges.begin(), edges.end()}))
       {
         std::vector<FrontPoint<dim>> front;
