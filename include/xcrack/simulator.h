@@ -137,10 +137,6 @@ namespace xcrack
                      std::unique_ptr<FEValues<dim>> &special_values,
                      const unsigned int              n_points_1d) const;
 
-    /// The lip rule of @p cell (empty for a cell without lips).
-    NonMatching::ImmersedSurfaceQuadrature<dim>
-    lip_rule(const typename DoFHandler<dim>::active_cell_iterator &cell) const;
-
     /**
      * Add the work of the lip pressure in @p cell to @p cell_rhs: the
      * integral over the lips in the cell of p n . [[phi_i]], where n points

@@ -178,36 +178,14 @@ namespace xcrack
 
 
   template <int dim>
-  NonMatching::ImmersedSurfaceQuadrature<dim>
-  Simulator<dim>::lip_rule(
-    const typename DoFHandler<dim>::active_cell_iterator &cell) const
-  {
-    if (!enrichment ||
-        !(enrichment->is_split(cell) || enrichment->is_tip(cell)))
-      return {};
-    const auto [lsn, lst] = enrichment->level_set_values(cell);
-    // Where the front crosses a 3D cell, four boxes per direction
-    // (CellQuadrature::lip_rule; 2D tip cells are split exactly).
-    // On the lips of a tip cell the jumps of the branch functions grow like
-    // sqrt(r) from the front: Gauss rules need more points there (2 points
-    // on sqrt(x) over [0, 1] err by 1 %, 6 points by 5e-4).
-    const unsigned int n_points =
-      (enrichment->is_tip(cell) ?
-         std::max(degree + 1,
-                  enrichment->get_parameters().tip_quadrature_points) :
-         degree + 1);
-    return CellQuadrature::lip_rule<dim>(lsn, lst, n_points, 4);
-  }
-
-
-
-  template <int dim>
   void
   Simulator<dim>::add_lip_pressure(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     Vector<double>                                       &cell_rhs) const
   {
-    const auto rule = lip_rule(cell);
+    if (!enrichment)
+      return;
+    const auto rule = enrichment->lip_quadrature(cell);
     if (rule.size() == 0)
       return;
     const FiniteElement<dim> &fe = cell->get_fe();

@@ -39,7 +39,7 @@ namespace xcrack
                              std::vector<Point<dim>>     &points,
                              std::vector<double>         &weights,
                              std::vector<Tensor<1, dim>> &normals) {
-      const auto rule = lip_rule(cell);
+      const auto rule = enrichment->lip_quadrature(cell);
       points          = rule.get_points();
       weights         = rule.get_weights();
       normals         = rule.get_normal_vectors();

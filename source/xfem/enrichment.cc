@@ -1512,6 +1512,25 @@ namespace xcrack
 
 
   template <int dim>
+  NonMatching::ImmersedSurfaceQuadrature<dim>
+  Enrichment<dim>::lip_quadrature(
+    const typename DoFHandler<dim>::active_cell_iterator &cell) const
+  {
+    if (!(is_split(cell) || is_tip(cell)))
+      return {};
+    const auto [lsn, lst] = level_set_values(cell);
+    // Where the front crosses a 3D cell, four boxes per direction (2D tip
+    // cells are split exactly).
+    const unsigned int n_points =
+      (is_tip(cell) ?
+         std::max(assembly_points_1d, parameters.tip_quadrature_points) :
+         assembly_points_1d);
+    return CellQuadrature::lip_rule<dim>(lsn, lst, n_points, 4);
+  }
+
+
+
+  template <int dim>
   const Quadrature<dim> &
   Enrichment<dim>::split_cell_quadrature(
     const typename DoFHandler<dim>::active_cell_iterator &cell,

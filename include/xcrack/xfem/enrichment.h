@@ -8,6 +8,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/hp/fe_collection.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/non_matching/immersed_surface_quadrature.h>
 
 #include <xcrack/crack/crack_geometry.h>
 #include <xcrack/crack/level_set_fields.h>
@@ -312,6 +313,20 @@ namespace xcrack
     special_quadrature(
       const typename DoFHandler<dim>::active_cell_iterator &cell,
       const unsigned int                                    n_points_1d) const;
+
+    /**
+     * The rule on the lips inside @p cell (reference coordinates, normals
+     * pointing to the lsn > 0 lip), empty for a cell that is neither split
+     * nor touched by the front: what loads on the lips, the K extraction's
+     * lip terms and the error estimator's lip residuals integrate with
+     * (CellQuadrature::lip_rule). On the lips of a tip cell the jumps of the
+     * branch functions grow like sqrt(r) from the front: Gauss rules need
+     * more points there (2 points on sqrt(x) over [0, 1] err by 1 %, 6
+     * points by 5e-4), so they get `Tip quadrature points`.
+     */
+    NonMatching::ImmersedSurfaceQuadrature<dim>
+    lip_quadrature(
+      const typename DoFHandler<dim>::active_cell_iterator &cell) const;
 
     /// The quadrature of split cells (see special_quadrature()).
     const Quadrature<dim> &
