@@ -86,6 +86,15 @@ namespace xcrack
 
 
   template <int dim>
+  const BoundaryConditions<dim> &
+  SimulatorAccess<dim>::get_boundary_conditions() const
+  {
+    return simulator->boundary_conditions;
+  }
+
+
+
+  template <int dim>
   const LevelSetFields<dim> &
   SimulatorAccess<dim>::get_level_set_fields() const
   {

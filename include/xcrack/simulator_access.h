@@ -34,6 +34,8 @@ namespace xcrack
   template <int dim>
   struct FrontMove;
   class Material;
+  template <int dim>
+  class BoundaryConditions;
 
   /**
    * Read access to the state of the Simulator for plugins (ASPECT's
@@ -81,6 +83,10 @@ namespace xcrack
 
     const Material &
     get_material() const;
+
+    /// The loads and supports of the parameter file.
+    const BoundaryConditions<dim> &
+    get_boundary_conditions() const;
 
     /// The cracks' level sets lsn, lst on the mesh.
     const LevelSetFields<dim> &

@@ -50,6 +50,16 @@ namespace xcrack
     Kelly<dim>::mark(
       parallel::distributed::Triangulation<dim> &triangulation) const
     {
+      if (this->get_enrichment() && !warned)
+        {
+          this->get_pcout()
+            << "  Warning: Mesh refinement/Strategy = kelly reads the "
+               "cracks' opening as error and refines their lips rather than "
+               "their fronts; Strategy = residual treats the lips as "
+               "boundaries."
+            << std::endl;
+          warned = true;
+        }
       const DoFHandler<dim> &dof_handler = this->get_dof_handler();
       Vector<float>          indicators(triangulation.n_active_cells());
       const unsigned int     max_degree =
@@ -76,6 +86,8 @@ namespace xcrack
                            Kelly,
                            "kelly",
                            "a fixed fraction of the cells with the largest "
-                           "Kelly indicator is refined (subsection Kelly).")
+                           "Kelly indicator is refined (subsection Kelly); "
+                           "it reads a crack's opening as error: with cracks, "
+                           "use residual.")
   } // namespace MeshRefinement
 } // namespace xcrack

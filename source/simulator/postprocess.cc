@@ -186,7 +186,9 @@ namespace xcrack
               << static_cast<long long>(value("dofs")) << std::scientific
               << std::setprecision(3) << std::setw(11) << value("L2_error");
         const auto rate = [&](const char *c) {
-          if (r == 0)
+          // No rate without a previous mesh, or when the mesh did not
+          // change (a strategy at its maximum level).
+          if (r == 0 || value("cells") == statistics.get("cells", r - 1))
             return std::string("    -");
           const double h_ratio =
             std::pow(value("cells") / statistics.get("cells", r - 1), 1. / dim);

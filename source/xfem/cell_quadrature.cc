@@ -322,6 +322,76 @@ namespace xcrack
 
 
     template <int dim>
+    FaceRule<dim>
+    face_rule(const std::vector<double> &lsn,
+              const std::vector<double> &lst,
+              const unsigned int         face_no,
+              const BoundingBox<dim>    &box,
+              const unsigned int         n_points_1d,
+              const double               zero)
+    {
+      const unsigned int direction = face_no / 2;
+      const double       coordinate =
+        (face_no % 2 ? box.get_boundary_points().second[direction] :
+                       box.get_boundary_points().first[direction]);
+      // The face point p of the generator in the cell: deal.II's
+      // restriction to a face numbers the remaining coordinates cyclically
+      // after the face's own ((y, z), (z, x), (x, y) in 3D).
+      const auto in_cell = [&](const Point<dim - 1> &p) {
+        Point<dim> x;
+        x[direction] = coordinate;
+        for (unsigned int k = 0; k + 1 < dim; ++k)
+          x[(direction + 1 + k) % dim] = p[k];
+        return x;
+      };
+
+      const ReferenceCellLevelSet<dim> normal(lsn);
+      const ReferenceCellLevelSet<dim> tangent(lst);
+      bool                             in_face = true;
+      for (unsigned int v = 0; v < GeometryInfo<dim - 1>::vertices_per_cell;
+           ++v)
+        {
+          const Point<dim - 1> corner =
+            GeometryInfo<dim - 1>::unit_cell_vertex(v);
+          Point<dim - 1> p;
+          for (unsigned int k = 0; k + 1 < dim; ++k)
+            {
+              const unsigned int d = (direction + 1 + k) % dim;
+              p[k]                 = box.get_boundary_points().first[d] +
+                     corner[k] * box.side_length(d);
+            }
+          in_face = in_face && std::abs(normal.value(in_cell(p))) <= zero;
+        }
+
+      const hp::QCollection<1>                  q1d(QGauss<1>{n_points_1d});
+      NonMatching::FaceQuadratureGenerator<dim> generator(q1d);
+      generator.generate(in_face ? static_cast<const Function<dim> &>(tangent) :
+                                   static_cast<const Function<dim> &>(normal),
+                         box,
+                         face_no);
+      FaceRule<dim> rule;
+      for (const bool inside : {true, false})
+        {
+          const Quadrature<dim - 1> &side =
+            (inside ? generator.get_inside_quadrature() :
+                      generator.get_outside_quadrature());
+          for (unsigned int q = 0; q < side.size(); ++q)
+            {
+              rule.points.push_back(in_cell(side.point(q)));
+              rule.weights.push_back(side.weight(q));
+              rule.on_lip.push_back(in_face && inside);
+              Assert(in_face ||
+                       (normal.value(rule.points.back()) < 0) == inside ||
+                       std::abs(normal.value(rule.points.back())) <= zero,
+                     ExcMessage("Face rule on the wrong side of the crack."));
+            }
+        }
+      return rule;
+    }
+
+
+
+    template <int dim>
     NonMatching::ImmersedSurfaceQuadrature<dim>
     lip_rule(const std::vector<double> &lsn,
              const std::vector<double> &lst,
@@ -654,6 +724,20 @@ namespace xcrack
     cut_cell_rule<2>(const std::vector<double> &, const unsigned int);
     template std::pair<Quadrature<3>, double>
     cut_cell_rule<3>(const std::vector<double> &, const unsigned int);
+    template FaceRule<2>
+    face_rule<2>(const std::vector<double> &,
+                 const std::vector<double> &,
+                 const unsigned int,
+                 const BoundingBox<2> &,
+                 const unsigned int,
+                 const double);
+    template FaceRule<3>
+    face_rule<3>(const std::vector<double> &,
+                 const std::vector<double> &,
+                 const unsigned int,
+                 const BoundingBox<3> &,
+                 const unsigned int,
+                 const double);
     template NonMatching::ImmersedSurfaceQuadrature<2>
     lip_rule<2>(const std::vector<double> &,
                 const std::vector<double> &,

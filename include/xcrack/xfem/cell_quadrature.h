@@ -1,6 +1,7 @@
 #ifndef xcrack_xfem_cell_quadrature_h
 #define xcrack_xfem_cell_quadrature_h
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/tensor.h>
@@ -52,6 +53,37 @@ namespace xcrack
              const std::vector<double> &lst,
              const unsigned int         n_points_1d,
              const unsigned int         subdivisions);
+
+    /// Points on a face of the reference cell (see face_rule()).
+    template <int dim>
+    struct FaceRule
+    {
+      std::vector<Point<dim>> points;
+      /// Measures in the face's reference coordinates.
+      std::vector<double> weights;
+      /// Whether the point lies on the lips (the crack runs in the face).
+      std::vector<bool> on_lip;
+    };
+
+    /**
+     * A rule on face @p face_no of @p box, a box of the reference cell
+     * that shares that face with it (the whole cell, or the part next to
+     * a finer neighbour), for residuals on faces: Gauss rules of
+     * @p n_points_1d points per direction on each side of the zero set of
+     * lsn (deal.II's NonMatching::FaceQuadratureGenerator), so that no
+     * point straddles the crack where it crosses the face. Where the crack
+     * lies in the face (|lsn| <= @p zero at the face's corners, a crack
+     * along a row of nodes), the face is split by lst instead and its part
+     * with lst < 0 is lip. Points are in the cell's reference coordinates.
+     */
+    template <int dim>
+    FaceRule<dim>
+    face_rule(const std::vector<double> &lsn,
+              const std::vector<double> &lst,
+              const unsigned int         face_no,
+              const BoundingBox<dim>    &box,
+              const unsigned int         n_points_1d,
+              const double               zero);
 
     /**
      * Where the jumps across the lips are read: for each lip point (reference
