@@ -28,8 +28,13 @@ namespace xcrack
    * @p r_max] behind the tip is fitted by a straight line in r and
    * extrapolated to r = 0, which removes the first correction (the T-stress
    * does not open the lips; the next term of the expansion grows like r).
-   * The lips are sampled 1e-8 (relative to r) off the crack on each side,
-   * along -e1 in the plane (e1, e2) of the front point.
+   * The lips are sampled along -e1 in the plane (e1, e2) of the front
+   * point, delta = 0.01 @p r_min and 2 delta off the crack on each side:
+   * farther than the fit to vertices moves the discrete crack (at 1e-8 r
+   * both points of a sample could fall on one side of it where the crack
+   * passed near a vertex, and the fit returned K of the wrong sign). The
+   * difference across the lip grows linearly with the offset (the strain
+   * along e2); 2 d(delta) - d(2 delta) removes that term.
    * Collective; every rank gets the result.
    */
   template <int dim>
