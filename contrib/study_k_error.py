@@ -1,0 +1,88 @@
+#!/usr/bin/env python3
+"""Can K carry its own error estimate? (issue 16, part 2; doc/verification.md
+"K and its error: what the cheap estimates are worth").
+
+On the 2D K benchmarks with a known K this measures, on each mesh of the
+benchmark's own refinement, the true error of K from the shipped crowns
+(2 to 4 cells) against two estimates that need no extra solve:
+
+- crowns: the interaction integral is linear in q, and the shipped q (1 to
+  0 from 2 to 4 cells) is the mean of the q of the crowns 2-3 and 3-4, so
+  K(2,4) = (K(2,3) + K(3,4)) / 2; the estimate is |K(2,3) - K(3,4)| / 2,
+  the spread of two independent extractions about their mean;
+- jumps: |K_jump - K|, K_jump from the displacement jumps over the crown
+  (BENCHMARKS.md's cross-check).
+
+Effectivity = estimate / true error; a reliable estimate stays within 0.5
+to 2 on every benchmark and mesh.
+
+    contrib/build.sh release
+    /usr/bin/python3 contrib/study_k_error.py [--jobs 2]
+"""
+import argparse
+import tempfile
+from concurrent.futures import ThreadPoolExecutor
+
+from xcrack_runs import run_xcrack, top
+
+# benchmark, extra entries, reference (K_I, K_II)
+BENCHMARKS = [
+    # (exact_mode_I_2d and exact_mixed_2d repeat sif_exact_2d's errors:
+    # on its mesh, symmetric about the crack, the modes do not mix.)
+    ("sif_exact_2d", "", (1.0, 0.5)),
+    ("exact_mode_I_2d", "subsection Enrichment\n  set Tip enrichment = "
+     "topological\n  set Enrichment radius = 0\nend\n", (1.0, 0.0)),
+    ("sif_inclined_2d", "", (1.32934039, 0.76749503)),
+    ("sif_sent_2d", "", (1.606801, 0.0)),
+]
+
+
+def run(benchmark, entries, crowns):
+    with tempfile.TemporaryDirectory() as work:
+        text = (f"include {top}/prm/benchmarks/{benchmark}.prm\n"
+                f"set Output directory = {work}/out\n"
+                "subsection Output\n  set Timing summary = false\nend\n"
+                "subsection Fracture parameters\n"
+                f"  set Crown radii = {crowns[0]}, {crowns[1]}\n"
+                "  set Crown unit = cells\nend\n" + entries)
+        return run_xcrack(text, work)
+
+
+def main(jobs):
+    print("| benchmark | mesh | DoFs | mode | K error | crowns estimate "
+          "| effectivity | jumps estimate | effectivity |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    summary = {"crowns": [], "jumps": []}
+    for benchmark, entries, reference in BENCHMARKS:
+        with ThreadPoolExecutor(jobs) as pool:
+            full, inner, outer = [f.result() for f in [
+                pool.submit(run, benchmark, entries, c)
+                for c in [(2, 4), (2, 3), (3, 4)]]]
+        label = benchmark + (" (topological)" if entries else "")
+        for m, (f, i, o) in enumerate(zip(full, inner, outer)):
+            for mode, column, ref in [("I", "K_I", reference[0]),
+                                      ("II", "K_II", reference[1])]:
+                if ref == 0:
+                    continue
+                k = float(f[f"{column}_1"])
+                error = abs(k - ref)
+                crowns = abs(float(i[f"{column}_1"]) - float(o[f"{column}_1"])) / 2
+                jumps = abs(float(f[f"{column}_jump_1"]) - k)
+                e_c, e_j = crowns / error, jumps / error
+                summary["crowns"].append(e_c)
+                summary["jumps"].append(e_j)
+                print(f"| {label} | {m} | {int(f['dofs']):,} | {mode} | "
+                      f"{error / ref:.2e} | {crowns / ref:.2e} | {e_c:.2f} | "
+                      f"{jumps / ref:.2e} | {e_j:.1f} |")
+    print()
+    for name, values in summary.items():
+        inside = sum(0.5 <= v <= 2 for v in values)
+        print(f"- {name}: effectivity from {min(values):.2f} to "
+              f"{max(values):.1f}, within [0.5, 2] in {inside} of "
+              f"{len(values)} cases")
+
+
+if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--jobs", type=int, default=2)
+    main(parser.parse_args().jobs)
