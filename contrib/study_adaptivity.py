@@ -23,7 +23,8 @@ interpolated (log-log) at the strategy's last DoFs, divided by the
 strategy's error.
 
 `case1_3d`: the 3D version (prm/benchmarks/exact_mode_I_3d.prm, a
-straight front through a cube), same strategies; optimal is N^(-1/3).
+straight front through a cube), same strategies; optimal is N^(-1/3)
+(30 min; the K_I column is empty: a 3D front has no single K).
 
 `hole`: an edge crack heading for a hole (the square [-1,1]^2 with a hole
 of radius 0.2 at its centre, GridGenerator::hyper_cube_with_cylindrical_hole,
@@ -311,9 +312,13 @@ def table(results):
 
 
 def case1(jobs, three_d=False):
+    # In 3D, front refinement of a whole straight front runs out of memory
+    # (24 GiB) on its ninth mesh: it stops at the seventh.
+    front_meshes = 14
     if three_d:
         benchmarks = [("exact_mode_I_3d", "straight front", "")]
-        adaptive_meshes, global_meshes, max_level = 9, 4, 8
+        adaptive_meshes, global_meshes, max_level = 8, 4, 8
+        front_meshes = 7
     else:
         benchmarks = [
             ("exact_mode_I_2d", "crack along a row of nodes", ""),
@@ -323,7 +328,7 @@ def case1(jobs, three_d=False):
     all_results = {}
     for benchmark, title, mesh in benchmarks:
         cases = [("global", strategy_entries("global"), global_meshes),
-                 ("front", strategy_entries("front"), adaptive_meshes),
+                 ("front", strategy_entries("front"), front_meshes),
                  ("kelly 0.2", strategy_entries("kelly", 0.2), adaptive_meshes),
                  ("residual, fixed number 0.2",
                   strategy_entries("residual", 0.2, "fixed number"),
