@@ -301,8 +301,9 @@ def table(results):
         tail = [(a, b) for a, b, _ in rows[-4:]]
         rate = slope(tail) if len(set(a for a, _ in tail)) > 1 else float("nan")
         ratio = uniform_at(uniform, n) / e
+        k_text = "-" if math.isnan(k) else f"{k:.5f}"
         print(f"| {label} | {len(rows)} | {n:,} | {e:.3e} | {rate:.2f} | "
-              f"{ratio:.2f} | {k:.5f} |")
+              f"{ratio:.2f} | {k_text} |")
     print()
     print("Error against DoFs, every mesh:")
     print()
