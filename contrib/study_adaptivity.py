@@ -26,10 +26,10 @@ strategy's error.
 straight front through a cube), same strategies; optimal is N^(-1/3)
 (30 min; the K_I column is empty: a 3D front has no single K).
 
-`hole`: an edge crack heading for a hole (the square [-1,1]^2 with a hole
-of radius 0.2 at its centre, GridGenerator::hyper_cube_with_cylindrical_hole,
-crack from the left face to x = -0.5 at y = 0.05, bottom held, tension 1
-on the top): K_I and the cells of global and residual refinement, and
+`hole`: prm/benchmarks/adaptive_hole_2d.prm, an edge crack heading for a
+hole (the square [-1,1]^2 with a hole of radius 0.2 at its centre, crack
+from the left face to x = -0.5 at y = 0.05, bottom held, tension 1 on the
+top): K_I and the cells of global and residual refinement, and
 doc/figures/adapted_mesh_hole.png, the tenth residual mesh (refined at the
 tip, around the hole where the stress concentrates, and at the corners
 where the held bottom meets the free sides).
@@ -135,43 +135,14 @@ def draw_meshes(jobs):
     print(f"wrote {path}")
 
 
-HOLE = """set Dimension = 2
-subsection Mesh
-  set Type = generator
-  set Generator name = hyper_cube_with_cylindrical_hole
-  set Generator arguments = 0.2 : 1 : 0.5 : 1 : true
-  set Initial global refinement = 2
-end
-subsection Material
-  set Young's modulus = 1
-  set Poisson's ratio = 0.3
-end
-subsection Cracks
-  set Number of cracks = 1
-  subsection Crack 1
-    set Start point = -1.5, 0.05
-    set End point   = -0.5, 0.05
-    set Tips        = end
-  end
-end
-subsection Boundary conditions
-  set Dirichlet = 2: 0; 0
-  set Neumann   = 3: 0; 1
-end
-subsection Fracture parameters
-  set Crown radii = 0.05, 0.15
-  set Crown unit  = absolute
-end
-subsection Output
-  set Timing summary = false
-end
-"""
 
 
 def hole(jobs):
     def run_hole(label, entries, meshes, cells=False):
         with tempfile.TemporaryDirectory() as work:
-            text = (HOLE + f"set Output directory = {work}/out\n"
+            text = (f"include {top}/prm/benchmarks/adaptive_hole_2d.prm\n"
+                    f"set Output directory = {work}/out\n"
+                    "subsection Output\n  set Timing summary = false\nend\n"
                     "subsection Output\n"
                     f"  set Write vtu = {'true' if cells else 'false'}\nend\n"
                     f"subsection Mesh refinement\n  set Number of meshes = {meshes}\n"
