@@ -69,20 +69,33 @@ def strategy_entries(strategy, fraction=None, marking=None):
     return text + "end\n"
 
 
-def run(benchmark, label, entries, meshes, max_level, cells=False):
-    """The (DoFs, energy error, K_I) of every mesh; with `cells`, also the
-    corners of the last mesh's cells (2D)."""
+def run_scene(benchmark, entries, meshes, picture_mesh=None):
+    """Run prm/benchmarks/<benchmark>.prm with `entries` on `meshes` meshes:
+    the rows of statistics.csv and, with `picture_mesh`, the corners of
+    that mesh's cells (2D)."""
     with tempfile.TemporaryDirectory() as work:
+        vtu = "false" if picture_mesh is None else "true"
         text = (f"include {top}/prm/benchmarks/{benchmark}.prm\n"
                 f"set Output directory = {work}/out\n"
                 "subsection Output\n  set Timing summary = false\n"
-                f"  set Write vtu = {'true' if cells else 'false'}\nend\n"
+                f"  set Write vtu = {vtu}\nend\n"
                 f"subsection Mesh refinement\n  set Number of meshes = {meshes}\n"
-                f"  set Maximum level = {max_level}\nend\n" + entries)
+                "end\n" + entries)
         rows = run_xcrack(text, work)
-        if cells:
-            return label, read_cells(
-                f"{work}/out/solution-000.{meshes - 1:02d}.0000.vtu")
+        cells = (None if picture_mesh is None else read_cells(
+            f"{work}/out/solution-000.{picture_mesh:02d}.0000.vtu"))
+    return rows, cells
+
+
+def run(benchmark, label, entries, meshes, max_level, cells=False):
+    """The (DoFs, energy error, K_I) of every mesh; with `cells`, the
+    corners of the last mesh's cells instead (2D)."""
+    rows, picture = run_scene(
+        benchmark, entries + "subsection Mesh refinement\n"
+        f"  set Maximum level = {max_level}\nend\n", meshes,
+        meshes - 1 if cells else None)
+    if cells:
+        return label, picture
     return label, [(int(r["dofs"]), float(r["energy_error"]),
                     float(r["K_I_1"]) if "K_I_1" in r else float("nan"))
                    for r in rows]
@@ -139,18 +152,9 @@ def draw_meshes(jobs):
 
 def hole(jobs):
     def run_hole(label, entries, meshes, cells=False):
-        with tempfile.TemporaryDirectory() as work:
-            text = (f"include {top}/prm/benchmarks/adaptive_hole_2d.prm\n"
-                    f"set Output directory = {work}/out\n"
-                    "subsection Output\n  set Timing summary = false\nend\n"
-                    "subsection Output\n"
-                    f"  set Write vtu = {'true' if cells else 'false'}\nend\n"
-                    f"subsection Mesh refinement\n  set Number of meshes = {meshes}\n"
-                    "end\n" + entries)
-            rows = run_xcrack(text, work)
-            # The picture: the tenth mesh (the last ones are black).
-            picture = (read_cells(f"{work}/out/solution-000.09.0000.vtu")
-                       if cells else None)
+        # The picture: the tenth mesh (the last ones are black).
+        rows, picture = run_scene("adaptive_hole_2d", entries, meshes,
+                                  9 if cells else None)
         return label, [(int(r["cells"]), int(r["dofs"]), float(r["K_I_1"]))
                        for r in rows], picture
 
@@ -192,13 +196,7 @@ def collinear(jobs):
     reference = {"inner": 1.857461, "outer": 1.822000}
 
     def run_collinear(label, entries, meshes):
-        with tempfile.TemporaryDirectory() as work:
-            text = (f"include {top}/prm/benchmarks/sif_collinear_2d.prm\n"
-                    f"set Output directory = {work}/out\n" + TOPOLOGICAL +
-                    "subsection Output\n  set Timing summary = false\nend\n"
-                    f"subsection Mesh refinement\n  set Number of meshes = {meshes}\n"
-                    "end\n" + entries)
-            rows = run_xcrack(text, work)
+        rows, _ = run_scene("sif_collinear_2d", TOPOLOGICAL + entries, meshes)
         result = []
         for r in rows:
             # Tips 1, 4 outer (|x| = 3), 2, 3 inner, numbered crack by crack.
