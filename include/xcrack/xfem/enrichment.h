@@ -180,6 +180,10 @@ namespace xcrack
    *
    * Not yet: shifted enrichment; crossing or
    * branching cracks (overlapping zones).
+   *
+   * Its member functions live in three files: enrichment.cc (the element,
+   * the classification, the constraints), enrichment_gathering.cc (DOF
+   * gathering) and enrichment_quadrature.cc (the cells' rules).
    */
   template <int dim>
   class Enrichment
