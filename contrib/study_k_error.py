@@ -11,7 +11,12 @@ benchmark's own refinement, the true error of K from the shipped crowns
   K(2,4) = (K(2,3) + K(3,4)) / 2; the estimate is |K(2,3) - K(3,4)| / 2,
   the spread of two independent extractions about their mean;
 - jumps: |K_jump - K|, K_jump from the displacement jumps over the crown
-  (BENCHMARKS.md's cross-check).
+  (BENCHMARKS.md's cross-check);
+- dual: xcrack's own estimate (`Fracture parameters/Error estimate`,
+  KErrorEstimator): signed, so its effectivity is (K_exact - K)_estimated /
+  (K_exact - K), negative when it points the wrong way. Rows whose dual
+  crown is under 4 cells wide are flagged unreliable by the run itself
+  (marked *) and left out of the summary.
 
 Effectivity = estimate / true error; a reliable estimate stays within 0.5
 to 2 on every benchmark and mesh.
@@ -44,15 +49,17 @@ def run(benchmark, entries, crowns):
                 "subsection Output\n  set Timing summary = false\nend\n"
                 "subsection Fracture parameters\n"
                 f"  set Crown radii = {crowns[0]}, {crowns[1]}\n"
-                "  set Crown unit = cells\nend\n" + entries)
+                "  set Crown unit = cells\n"
+                "  set Error estimate = true\nend\n" + entries)
         return run_xcrack(text, work)
 
 
 def main(jobs):
     print("| benchmark | mesh | DoFs | mode | K error | crowns estimate "
-          "| effectivity | jumps estimate | effectivity |")
-    print("|---|---|---|---|---|---|---|---|---|")
-    summary = {"crowns": [], "jumps": []}
+          "| effectivity | jumps estimate | effectivity | dual estimate "
+          "| effectivity |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    summary = {"crowns": [], "jumps": [], "dual": []}
     for benchmark, entries, reference in BENCHMARKS:
         with ThreadPoolExecutor(jobs) as pool:
             full, inner, outer = [f.result() for f in [
@@ -68,12 +75,18 @@ def main(jobs):
                 error = abs(k - ref)
                 crowns = abs(float(i[f"{column}_1"]) - float(o[f"{column}_1"])) / 2
                 jumps = abs(float(f[f"{column}_jump_1"]) - k)
+                dual = float(f[f"{column}_estimate_1"])
                 e_c, e_j = crowns / error, jumps / error
+                e_d = dual / (ref - k)
+                reliable = float(f["estimate_crown_cells"]) >= 4
                 summary["crowns"].append(e_c)
                 summary["jumps"].append(e_j)
+                if reliable:
+                    summary["dual"].append(e_d)
                 print(f"| {label} | {m} | {int(f['dofs']):,} | {mode} | "
                       f"{error / ref:.2e} | {crowns / ref:.2e} | {e_c:.2f} | "
-                      f"{jumps / ref:.2e} | {e_j:.1f} |")
+                      f"{jumps / ref:.2e} | {e_j:.1f} | {abs(dual) / ref:.2e} "
+                      f"| {e_d:.2f}{'' if reliable else '*'} |")
     print()
     for name, values in summary.items():
         inside = sum(0.5 <= v <= 2 for v in values)

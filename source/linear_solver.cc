@@ -12,6 +12,12 @@
 
 namespace xcrack
 {
+  LinearSolver::LinearSolver() = default;
+
+  LinearSolver::~LinearSolver() = default;
+
+
+
   void
   LinearSolver::declare_parameters(ParameterHandler &prm)
   {
@@ -64,7 +70,7 @@ namespace xcrack
   void
   LinearSolver::solve_direct(const TrilinosWrappers::SparseMatrix &matrix,
                              TrilinosWrappers::MPI::Vector        &x,
-                             const TrilinosWrappers::MPI::Vector  &rhs) const
+                             const TrilinosWrappers::MPI::Vector  &rhs)
   {
     // Amesos directly rather than deal.II's SolverDirect: MUMPS needs its
     // parameters set. The matrix is symmetric positive definite (the
@@ -73,7 +79,7 @@ namespace xcrack
     // before factorising, and enriched matrices (dense blocks at the front)
     // can exceed the estimate (INFOG(1) = -9): retry with more room, in
     // steps of two (a larger request may not be allocatable at all, -13).
-    Epetra_LinearProblem problem(
+    problem = std::make_unique<Epetra_LinearProblem>(
       const_cast<Epetra_CrsMatrix *>(&matrix.trilinos_matrix()),
       &x.trilinos_vector(),
       const_cast<Epetra_MultiVector *>(
@@ -81,25 +87,26 @@ namespace xcrack
     int error = 0, info = 0;
     for (int relaxation = 100; relaxation <= 1600; relaxation *= 2)
       {
-        Amesos_Mumps solver(problem);
-        solver.SetICNTL(14, relaxation);
-        solver.SetICNTL(4, 0); // MUMPS prints nothing; we report failures
+        factorization = std::make_unique<Amesos_Mumps>(*problem);
+        factorization->SetICNTL(14, relaxation);
+        factorization->SetICNTL(4, 0); // MUMPS prints nothing; we report
         if (ordering == "pord")
-          solver.SetICNTL(7, 4);
+          factorization->SetICNTL(7, 4);
         Teuchos::ParameterList parameters;
         parameters.set("MatrixProperty", "SPD");
-        solver.SetParameters(parameters);
-        error = solver.SymbolicFactorization();
+        factorization->SetParameters(parameters);
+        error = factorization->SymbolicFactorization();
         if (error == 0)
-          error = solver.NumericFactorization();
+          error = factorization->NumericFactorization();
         if (error == 0)
-          error = solver.Solve();
-        info = solver.GetINFOG()[0];
+          error = factorization->Solve();
+        info = factorization->GetINFOG()[0];
         if (error == 0 || info != -9)
           break;
       }
     if (error == 0)
       return;
+    factorization.reset();
     if (info == -10)
       throw std::runtime_error(
         "the direct solver failed: the stiffness matrix is singular. "
@@ -118,33 +125,73 @@ namespace xcrack
 
 
   unsigned int
-  LinearSolver::solve(
-    const TrilinosWrappers::SparseMatrix &matrix,
-    TrilinosWrappers::MPI::Vector        &x,
-    const TrilinosWrappers::MPI::Vector  &rhs,
-    const std::vector<std::vector<bool>> &constant_modes) const
+  LinearSolver::solve_cg(TrilinosWrappers::MPI::Vector       &x,
+                         const TrilinosWrappers::MPI::Vector &rhs) const
   {
+    SolverControl                           control(max_iterations,
+                          relative_tolerance * rhs.l2_norm(),
+                          false,
+                          false);
+    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+    cg.solve(*last_matrix, x, rhs, *amg);
+    return control.last_step();
+  }
+
+
+
+  unsigned int
+  LinearSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
+                      TrilinosWrappers::MPI::Vector        &x,
+                      const TrilinosWrappers::MPI::Vector  &rhs,
+                      const std::vector<std::vector<bool>> &constant_modes)
+  {
+    release();
+    last_matrix = &matrix;
     if (type == "direct")
       {
         solve_direct(matrix, x, rhs);
         return 1;
       }
 
-    TrilinosWrappers::PreconditionAMG                 amg;
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
     data.higher_order_elements = false;
     data.smoother_sweeps       = 2;
     data.aggregation_threshold = 0.02;
     data.constant_modes        = constant_modes;
-    amg.initialize(matrix, data);
+    amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    amg->initialize(matrix, data);
+    return solve_cg(x, rhs);
+  }
 
-    SolverControl                           control(max_iterations,
-                          relative_tolerance * rhs.l2_norm(),
-                          false,
-                          false);
-    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-    cg.solve(matrix, x, rhs, amg);
-    return control.last_step();
+
+
+  unsigned int
+  LinearSolver::solve_again(TrilinosWrappers::MPI::Vector       &x,
+                            const TrilinosWrappers::MPI::Vector &rhs)
+  {
+    Assert(last_matrix != nullptr, ExcMessage("No solve() before."));
+    if (type != "direct")
+      return solve_cg(x, rhs);
+    AssertThrow(factorization, ExcMessage("No factorization to reuse."));
+    problem->SetLHS(&x.trilinos_vector());
+    problem->SetRHS(const_cast<Epetra_MultiVector *>(
+      static_cast<const Epetra_MultiVector *>(&rhs.trilinos_vector())));
+    const int error = factorization->Solve();
+    AssertThrow(error == 0,
+                ExcMessage("the direct solver failed on a further "
+                           "right-hand side (error " +
+                           std::to_string(error) + ")."));
+    return 1;
+  }
+
+
+  void
+  LinearSolver::release()
+  {
+    factorization.reset();
+    problem.reset();
+    amg.reset();
+    last_matrix = nullptr;
   }
 } // namespace xcrack

@@ -3,10 +3,15 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <memory>
 #include <vector>
+
+class Amesos_Mumps;
+class Epetra_LinearProblem;
 
 namespace xcrack
 {
@@ -22,10 +27,18 @@ namespace xcrack
    *   multigrid, with the rigid translations as near-null space. Memory
    *   scales linearly, so it is the choice for large uncracked or mildly
    *   enriched problems.
+   *
+   * The factorization (or the AMG hierarchy) of the last solve() is kept
+   * until release() or the next solve(), so that further right-hand sides
+   * with the same matrix (the dual problems of K's error estimate) cost a
+   * substitution (or a preconditioned CG run) only.
    */
   class LinearSolver
   {
   public:
+    LinearSolver();
+    ~LinearSolver();
+
     static void
     declare_parameters(ParameterHandler &prm);
 
@@ -42,7 +55,21 @@ namespace xcrack
     solve(const TrilinosWrappers::SparseMatrix &matrix,
           TrilinosWrappers::MPI::Vector        &x,
           const TrilinosWrappers::MPI::Vector  &rhs,
-          const std::vector<std::vector<bool>> &constant_modes) const;
+          const std::vector<std::vector<bool>> &constant_modes);
+
+    /**
+     * Solve the matrix of the last solve() (which must still exist,
+     * unchanged) for another right-hand side @p rhs, reusing its
+     * factorization or preconditioner. Returns the iterations.
+     */
+    unsigned int
+    solve_again(TrilinosWrappers::MPI::Vector       &x,
+                const TrilinosWrappers::MPI::Vector &rhs);
+
+    /// Free what solve() kept for solve_again() (the factor is the largest
+    /// object of a direct solve).
+    void
+    release();
 
     std::string type = "direct";
     /// Fill-reducing ordering of the direct solver: "amd" or "pord".
@@ -55,7 +82,18 @@ namespace xcrack
     void
     solve_direct(const TrilinosWrappers::SparseMatrix &matrix,
                  TrilinosWrappers::MPI::Vector        &x,
-                 const TrilinosWrappers::MPI::Vector  &rhs) const;
+                 const TrilinosWrappers::MPI::Vector  &rhs);
+
+    /// CG with the preconditioner of the last solve().
+    unsigned int
+    solve_cg(TrilinosWrappers::MPI::Vector       &x,
+             const TrilinosWrappers::MPI::Vector &rhs) const;
+
+    /// What the last solve() leaves for solve_again().
+    const TrilinosWrappers::SparseMatrix              *last_matrix = nullptr;
+    std::unique_ptr<Epetra_LinearProblem>              problem;
+    std::unique_ptr<Amesos_Mumps>                      factorization;
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
   };
 } // namespace xcrack
 

@@ -21,6 +21,7 @@
 #include <xcrack/crack/crack_surface.h>
 #include <xcrack/crack/level_set_fields.h>
 #include <xcrack/fracture/interaction_integral.h>
+#include <xcrack/fracture/k_error_estimator.h>
 #include <xcrack/front_move.h>
 #include <xcrack/linear_solver.h>
 #include <xcrack/material.h>
@@ -237,6 +238,19 @@ namespace xcrack
     void
     compute_fracture_parameters(const bool report = true);
 
+    /**
+     * The estimates of the error of the K's in front_values: K on a wide
+     * crown (as wide as the boundary and the other tips allow, for a dual
+     * problem the mesh resolves), the estimate of its error
+     * (KErrorEstimator, a dual solve per K), and the difference of the two
+     * K's.
+     */
+    void
+    estimate_k_errors(
+      const std::vector<std::vector<FrontPoint<dim>>>     &fronts,
+      const typename InteractionIntegral<dim>::FEValuesOf &fe_values_of,
+      const typename InteractionIntegral<dim>::LipsOf     &lips_of);
+
     /// front_<key>.csv: K, G and, in a growth run, the moves (fracture.cc).
     void
     write_front_file(const std::string &key) const;
@@ -335,7 +349,10 @@ namespace xcrack
     /// K at the points of every front (fronts numbered crack after crack)
     /// and, in a growth run, their moves: the state of the current step.
     std::vector<FrontValues<dim>> front_values;
-    std::vector<FrontMove<dim>>   front_moves;
+    /// The width of the wide crown of the K error estimate, in cells of
+    /// the tip (below 4 the estimate is unreliable).
+    double                      wide_crown_cells = 0;
+    std::vector<FrontMove<dim>> front_moves;
 
     /// How far the loads can move the body, in order of magnitude
     /// (BoundaryConditions::check_finite()).

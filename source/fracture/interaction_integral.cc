@@ -5,6 +5,7 @@
 #include <deal.II/fe/fe_values_extractors.h>
 #include <deal.II/fe/mapping_q1.h>
 
+#include <xcrack/fracture/auxiliary_fields.h>
 #include <xcrack/fracture/front_curve.h>
 #include <xcrack/fracture/interaction_integral.h>
 #include <xcrack/fracture/williams.h>
@@ -30,6 +31,13 @@ namespace xcrack
                         "Extract K_I, K_II (, K_III) and G at the crack "
                         "tips or along the fronts after each solve and "
                         "write front_<step>.csv.");
+      prm.declare_entry(
+        "Error estimate",
+        "false",
+        Patterns::Bool(),
+        "Estimate the error of every K: one dual solve per K (reusing the "
+        "factorization of the direct solver) and a recovery of the "
+        "stresses; written as K_I_error, ... beside the K's.");
       prm.declare_entry("Crown radii",
                         "2, 4",
                         Patterns::Anything(),
@@ -80,6 +88,7 @@ namespace xcrack
     const std::string section = "Fracture parameters/";
     prm.enter_subsection("Fracture parameters");
     compute                              = prm.get_bool("Compute");
+    error_estimate                       = prm.get_bool("Error estimate");
     const std::string         radii_text = prm.get("Crown radii");
     const std::vector<double> radii =
       parse_numbers(radii_text, 2, section + "Crown radii");
@@ -128,61 +137,6 @@ namespace xcrack
 
   namespace
   {
-    /// The dim x dim block of a 3 x 3 tensor.
-    template <int dim>
-    Tensor<2, dim>
-    block(const Tensor<2, 3> &t)
-    {
-      Tensor<2, dim> result;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          result[i][j] = t[i][j];
-      return result;
-    }
-
-
-
-    /**
-     * Gradients (global components) of the auxiliary fields u = u_a(x1, x2)
-     * e_a(s) of unit K_I, K_II (, K_III) at local coordinates @p xl, polar
-     * (@p r, @p angle), of the front frame at the projection: the plane
-     * Williams gradient rotated, plus, along a curved 3D front, the turning
-     * of the frame, u_a de_a/ds (x) grad s with grad s = e3 / (1 + x1
-     * de1/ds . e3 + x2 de2/ds . e3). Without that term the auxiliary strain
-     * is not the strain of any displacement and K along a circle of radius
-     * rho is off by about r_sup / rho (7 % for crowns of 4 cells of 1/16 on
-     * the unit penny). @p unit gives mu and kappa.
-     */
-    template <int dim, int n_modes>
-    void
-    aux_gradients(const WilliamsField                        &unit,
-                  const typename FrontCurve<dim>::Projection &projection,
-                  const Tensor<1, dim>                       &xl,
-                  const double                                r,
-                  const double                                angle,
-                  Tensor<2, dim> (&gradients)[n_modes])
-    {
-      Tensor<1, 3> u[3];
-      Tensor<2, 3> local[3];
-      unit.unit_modes(r, angle, u, local);
-      const Tensor<2, dim> &R = projection.R;
-      for (unsigned int m = 0; m < n_modes; ++m)
-        {
-          gradients[m] = transpose(R) * block<dim>(local[m]) * R;
-          if constexpr (dim == 3)
-            {
-              const Tensor<1, 3> e3  = R[2];
-              const double       h_s = 1 + xl[0] * (projection.dR[0] * e3) +
-                                 xl[1] * (projection.dR[1] * e3);
-              for (unsigned int a = 0; a < 3; ++a)
-                gradients[m] +=
-                  (u[m][a] / h_s) * outer_product(projection.dR[a], e3);
-            }
-        }
-    }
-
-
-
     /**
      * Divergence of the auxiliary stresses of the unit fields (K_I, K_II,
      * K_III = 1; @p unit gives mu and kappa) at @p x, whose projection on
@@ -257,7 +211,8 @@ namespace xcrack
     const FEValuesOf                                &fe_values_of,
     const Function<dim>                             *lip_pressure,
     const LipsOf                                    &lips_of,
-    const Function<dim>                             *body_force) const
+    const Function<dim>                             *body_force,
+    KDerivatives                                    *derivatives) const
   {
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
     const double   nu   = material.poisson_ratio;
@@ -326,6 +281,15 @@ namespace xcrack
                                      std::round(curve.length / r_sup))));
         const unsigned int  n_test = basis.n_test_functions();
         std::vector<double> local(n_test * n_integrals, 0.);
+        // With derivatives: d b_jm / dU per test function j and mode m,
+        // and their cell parts.
+        std::vector<TrilinosWrappers::MPI::Vector> d_b;
+        std::vector<Vector<double>>                d_cell;
+        std::vector<types::global_dof_index>       dof_indices;
+        if (derivatives)
+          d_b.assign(n_test * n_modes,
+                     TrilinosWrappers::MPI::Vector(
+                       dof_handler.locally_owned_dofs(), comm));
 
         // Other fronts or tips inside the crown.
         bool clear = true;
@@ -458,6 +422,25 @@ namespace xcrack
                     active_tests.push_back(j);
                     break;
                   }
+            if (derivatives)
+              {
+                d_cell.assign(n_test * n_modes,
+                              Vector<double>(cell->get_fe().n_dofs_per_cell()));
+                dof_indices.resize(cell->get_fe().n_dofs_per_cell());
+                cell->get_dof_indices(dof_indices);
+              }
+            // With derivatives: add grad phi_i : A to the derivative of
+            // b_jm at every shape function i of the cell (values read at
+            // point q of @p values).
+            const auto add_derivative = [&](const FEValues<dim>  &values,
+                                            const unsigned int    q,
+                                            const unsigned int    j,
+                                            const unsigned int    m,
+                                            const Tensor<2, dim> &A) {
+              Vector<double> &d = d_cell[j * n_modes + m];
+              for (unsigned int i = 0; i < d.size(); ++i)
+                d[i] += scalar_product(values[displacement].gradient(i, q), A);
+            };
             const auto theta_at = [&](const Point<dim>  &xi,
                                       const unsigned int j) {
               Tensor<1, dim> value;
@@ -540,6 +523,25 @@ namespace xcrack
                       for (unsigned int m = 0; m < n_integrals; ++m)
                         local[j * n_integrals + m] +=
                           scalar_product(T[m], grad_theta[j]) * JxW;
+                    // T[m] : Theta for du = G is G : A with A = C :
+                    // sym(du_aux Theta) + sigma_aux Theta^T - tr(Theta)
+                    // sigma_aux.
+                    if (derivatives)
+                      for (unsigned int m = 0; m < n_modes; ++m)
+                        {
+                          const Tensor<2, dim> sigma_aux(
+                            material.stress<dim>(symmetrize(du_aux[m])));
+                          for (const unsigned int j : active_tests)
+                            {
+                              const Tensor<2, dim> &Theta = grad_theta[j];
+                              const Tensor<2, dim>  A =
+                                Tensor<2, dim>(material.stress<dim>(
+                                  symmetrize(du_aux[m] * Theta))) +
+                                sigma_aux * transpose(Theta) -
+                                trace(Theta) * sigma_aux;
+                              add_derivative(fe_values, q, j, m, A * JxW);
+                            }
+                        }
 
                     // Body force: - int f_i u_i,k theta_k (u^aux for I).
                     if (body_force != nullptr)
@@ -574,15 +576,38 @@ namespace xcrack
                                                             div_aux);
                         for (const unsigned int j : active_tests)
                           {
-                            const Tensor<1, dim> du_theta =
-                              du * theta_at(xi, j);
+                            const Tensor<1, dim> theta    = theta_at(xi, j);
+                            const Tensor<1, dim> du_theta = du * theta;
                             for (unsigned int m = 0; m < n_modes; ++m)
-                              local[j * n_integrals + m] +=
-                                (div_aux[m] * du_theta) * JxW;
+                              {
+                                local[j * n_integrals + m] +=
+                                  (div_aux[m] * du_theta) * JxW;
+                                if (derivatives)
+                                  add_derivative(fe_values,
+                                                 q,
+                                                 j,
+                                                 m,
+                                                 outer_product(div_aux[m],
+                                                               theta) *
+                                                   JxW);
+                              }
                           }
                       }
                   }
               }
+
+            // The cell's derivatives so far into the global ones.
+            const auto flush_derivatives = [&]() {
+              if (!derivatives)
+                return;
+              for (unsigned int i = 0; i < d_cell.size(); ++i)
+                {
+                  derivatives->constraints->distribute_local_to_global(
+                    d_cell[i], dof_indices, d_b[i]);
+                  d_cell[i] = 0;
+                }
+            };
+            flush_derivatives();
 
             // Lip terms. With a pressure: - int t_i [u_i,k] theta_k, t = p n
             // on the lsn > 0 lip and -p n on the other. Along a curved 3D
@@ -654,9 +679,23 @@ namespace xcrack
                           local[j * n_integrals + m] +=
                             t_plus * (grad_u[2 * k] * theta) -
                             t_minus * (grad_u[2 * k + 1] * theta);
+                          if (derivatives)
+                            {
+                              add_derivative(side_values,
+                                             2 * k,
+                                             j,
+                                             m,
+                                             outer_product(t_plus, theta));
+                              add_derivative(side_values,
+                                             2 * k + 1,
+                                             j,
+                                             m,
+                                             -outer_product(t_minus, theta));
+                            }
                         }
                     }
               }
+            flush_derivatives();
           }
 
         std::vector<double> b_all(local.size());
@@ -682,6 +721,34 @@ namespace xcrack
             for (unsigned int j = 0; j < n_test; ++j)
               b[j] = b_all[j * n_integrals + m];
             nodal[m] = basis.values_at_nodes(b);
+          }
+        // dK at the nodes: the same map from the b_j, scaled as the K's.
+        if (derivatives)
+          {
+            for (auto &d : d_b)
+              d.compress(VectorOperation::add);
+            std::vector<std::vector<double>> to_nodes(n_test);
+            for (unsigned int j = 0; j < n_test; ++j)
+              {
+                std::vector<double> unit_b(n_test, 0.);
+                unit_b[j]   = 1;
+                to_nodes[j] = basis.values_at_nodes(unit_b);
+              }
+            for (unsigned int k = 0; k < basis.nodes().size(); ++k)
+              {
+                std::vector<TrilinosWrappers::MPI::Vector> loads(n_modes);
+                for (unsigned int m = 0; m < n_modes; ++m)
+                  {
+                    loads[m].reinit(dof_handler.locally_owned_dofs(), comm);
+                    const double scale_m =
+                      (m < 2 ? 0.5 * e_star : material.mu());
+                    for (unsigned int j = 0; j < n_test; ++j)
+                      if (to_nodes[j][k] != 0)
+                        loads[m].add(scale_m * to_nodes[j][k],
+                                     d_b[j * n_modes + m]);
+                  }
+                derivatives->loads.push_back(std::move(loads));
+              }
           }
         for (unsigned int k = 0; k < basis.nodes().size(); ++k)
           {

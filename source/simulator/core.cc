@@ -86,6 +86,11 @@ namespace xcrack
                 "Fracture parameters/Reference K: give " +
                   std::string(dim == 2 ? "'K_I; K_II'" : "'K_I; K_II; K_III'") +
                   " in " + std::to_string(dim) + "D.");
+    check_input(dim == 2 || !fracture_parameters.error_estimate,
+                "Fracture parameters/Error estimate = true: estimated "
+                "only at 2D tips so far (along a 3D front each K node "
+                "needs its own dual problem on a crown the mesh resolves; "
+                "not built yet).");
 
     prm.enter_subsection("Discretization");
     degree = prm.get_integer("Degree");
@@ -474,6 +479,8 @@ namespace xcrack
     front_moves.clear();
     if (enrichment && fracture_parameters.compute)
       compute_fracture_parameters();
+    // The factorization served the dual solves of the K error estimate.
+    linear_solver.release();
   }
 
 

@@ -2,12 +2,14 @@
 
 #include <xcrack/fracture/displacement_jump.h>
 #include <xcrack/fracture/interaction_integral.h>
+#include <xcrack/fracture/k_error_estimator.h>
 #include <xcrack/output_file.h>
 #include <xcrack/simulator.h>
 
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 
 namespace xcrack
 {
@@ -54,6 +56,9 @@ namespace xcrack
                                     boundary_conditions.body_force.get());
     if (!report)
       return;
+    const bool estimate = fracture_parameters.error_estimate;
+    if (estimate)
+      estimate_k_errors(fronts, fe_values_of, lips_of);
 
     // The cross-check by the displacement jumps over the crown.
     for (auto &v : front_values)
@@ -114,6 +119,15 @@ namespace xcrack
               << rounded(values[i].k_jump[0])
               << ", K_II = " << rounded(values[i].k_jump[1])
               << std::defaultfloat << std::endl;
+          if (estimate)
+            out << "    estimated errors (K_exact - K): K_I " << std::scientific
+                << std::setprecision(2) << v.k_error[0] << ", K_II "
+                << v.k_error[1] << std::defaultfloat
+                << (wide_crown_cells < 4 ?
+                      " (unreliable: the mesh is too coarse for the dual "
+                      "problem, its crown is less than 4 cells wide)" :
+                      "")
+                << std::endl;
           warn_crown(v);
           const std::string suffix = "_" + std::to_string(i + 1);
           statistics.add_value("K_I" + suffix, v.k_I);
@@ -121,6 +135,13 @@ namespace xcrack
           statistics.add_value("G" + suffix, v.g);
           statistics.add_value("K_I_jump" + suffix, values[i].k_jump[0]);
           statistics.add_value("K_II_jump" + suffix, values[i].k_jump[1]);
+          if (estimate)
+            {
+              statistics.add_value("K_I_estimate" + suffix, v.k_error[0]);
+              statistics.add_value("K_II_estimate" + suffix, v.k_error[1]);
+              if (i == 0)
+                statistics.add_value("estimate_crown_cells", wide_crown_cells);
+            }
         }
     else
       // Per front: the range and mean of each K over its nodes, and the
@@ -130,7 +151,8 @@ namespace xcrack
           double       k_min[3] = {1e300, 1e300, 1e300};
           double       k_max[3] = {-1e300, -1e300, -1e300}, k_mean[3] = {};
           double       largest = 1e-300, irwin_gap = 0, g_max = 1e-300;
-          unsigned int n = 0;
+          double       estimate_max[3] = {0, 0, 0};
+          unsigned int n               = 0;
           for (const auto &v : values)
             if (v.front == f)
               {
@@ -140,6 +162,8 @@ namespace xcrack
                     k_max[m] = std::max(k_max[m], k_of(v, m));
                     k_mean[m] += k_of(v, m);
                     largest = std::max(largest, std::abs(k_of(v, m)));
+                    estimate_max[m] =
+                      std::max(estimate_max[m], std::abs(v.k_error[m]));
                   }
                 irwin_gap = std::max(irwin_gap, std::abs(v.g - v.g_irwin));
                 g_max     = std::max(g_max, std::abs(v.g));
@@ -165,6 +189,10 @@ namespace xcrack
                                    k_min[m]);
               statistics.add_value(std::string(mode_names[m]) + "_max" + suffix,
                                    k_max[m]);
+              if (estimate)
+                statistics.add_value(std::string(mode_names[m]) +
+                                       "_estimate_max" + suffix,
+                                     estimate_max[m]);
             }
           out << std::endl
               << "    |G - G_Irwin| / max G = " << std::setprecision(2)
@@ -225,6 +253,99 @@ namespace xcrack
 
   template <int dim>
   void
+  Simulator<dim>::estimate_k_errors(
+    const std::vector<std::vector<FrontPoint<dim>>>     &fronts,
+    const typename InteractionIntegral<dim>::FEValuesOf &fe_values_of,
+    const typename InteractionIntegral<dim>::LipsOf     &lips_of)
+  {
+    // The wide crown: from r_inf to r_sup = 0.9 d, d the distance from the
+    // tips to the boundary and to each other, r_inf = 0.1 d but at least
+    // two cells of the tip.
+    double clear = std::numeric_limits<double>::max();
+    double h     = std::numeric_limits<double>::max();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto &front : fronts)
+          {
+            const Point<dim> &tip = front[0].position;
+            if (cell->point_inside(tip))
+              h = std::min(h, cell->diameter() / std::sqrt(double(dim)));
+            for (const unsigned int face : cell->face_indices())
+              if (cell->face(face)->at_boundary())
+                for (const unsigned int v : cell->face(face)->vertex_indices())
+                  clear =
+                    std::min(clear, tip.distance(cell->face(face)->vertex(v)));
+          }
+    for (unsigned int f = 0; f < fronts.size(); ++f)
+      for (unsigned int g = 0; g < f; ++g)
+        clear = std::min(clear,
+                         fronts[f][0].position.distance(fronts[g][0].position));
+    clear                   = Utilities::MPI::min(clear, mpi_communicator);
+    h                       = Utilities::MPI::min(h, mpi_communicator);
+    FractureParameters wide = fracture_parameters;
+    wide.crown_in_cells     = false;
+    wide.crown_outer        = 0.9 * clear;
+    wide.crown_inner        = std::max(0.1 * clear, 2 * h);
+    wide_crown_cells        = (wide.crown_outer - wide.crown_inner) / h;
+
+    // K on the wide crown and its derivatives, condensed by the
+    // homogeneous constraints (the dual problems' test space).
+    AffineConstraints<double> homogeneous;
+    homogeneous.copy_from(constraints);
+    for (const auto &line : constraints.get_lines())
+      homogeneous.set_inhomogeneity(line.index, 0.);
+    KDerivatives derivatives;
+    derivatives.constraints = &homogeneous;
+    const std::vector<FrontValues<dim>> wide_values =
+      InteractionIntegral<dim>(wide, material)
+        .compute(dof_handler,
+                 solution,
+                 fronts,
+                 fe_values_of,
+                 boundary_conditions.lip_pressure.get(),
+                 lips_of,
+                 boundary_conditions.body_force.get(),
+                 &derivatives);
+
+    // The dual solutions: one per K, with the factorization of the solve.
+    std::vector<TrilinosWrappers::MPI::Vector> duals;
+    for (const auto &loads : derivatives.loads)
+      for (const auto &load : loads)
+        {
+          TrilinosWrappers::MPI::Vector z(locally_owned_dofs, mpi_communicator);
+          linear_solver.solve_again(z, load);
+          homogeneous.distribute(z);
+          duals.emplace_back(locally_owned_dofs,
+                             locally_relevant_dofs,
+                             mpi_communicator);
+          duals.back() = z;
+        }
+    const KErrorEstimator<dim> estimator(dof_handler,
+                                         *enrichment,
+                                         constraints,
+                                         material,
+                                         fe_values_of,
+                                         fronts,
+                                         wide_values);
+    const std::vector<double>  errors = estimator.estimate(solution, duals);
+    // K_exact - K = (K_wide - K) + (K_exact - K_wide).
+    unsigned int d = 0;
+    for (unsigned int i = 0; i < front_values.size(); ++i)
+      {
+        const FrontValues<dim> &w              = wide_values[i];
+        const FrontValues<dim> &v              = front_values[i];
+        const double            differences[3] = {w.k_I - v.k_I,
+                                                  w.k_II - v.k_II,
+                                                  w.k_III - v.k_III};
+        for (unsigned int m = 0; m < derivatives.loads[i].size(); ++m)
+          front_values[i].k_error[m] = differences[m] + errors[d++];
+      }
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::write_front_file(const std::string &key) const
   {
     write_file(run_parameters.output_directory + "/front_" + key + ".csv",
@@ -240,6 +361,10 @@ namespace xcrack
   {
     csv << "index,s,x,y,z,K_I,K_II,K_III,G,G_Irwin,r_inf,r_sup,"
            "K_I_jump,K_II_jump,K_III_jump,front";
+    // The estimates of K_exact - K, when asked for.
+    const bool errors = fracture_parameters.error_estimate;
+    if (errors)
+      csv << ",K_I_error,K_II_error,K_III_error";
     // The moves of a growth step: equivalent K, its range, the rate, the
     // kink angle (radians) and the advance to the next step.
     const bool moves =
@@ -256,6 +381,9 @@ namespace xcrack
             << ',' << v.k_II << ',' << v.k_III << ',' << v.g << ',' << v.g_irwin
             << ',' << v.r_inf << ',' << v.r_sup << ',' << v.k_jump[0] << ','
             << v.k_jump[1] << ',' << v.k_jump[2] << ',' << v.front + 1;
+        if (errors)
+          csv << ',' << v.k_error[0] << ',' << v.k_error[1] << ','
+              << v.k_error[2];
         if (moves)
           {
             const auto &m = front_moves[i];

@@ -6,6 +6,7 @@
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <xcrack/crack/crack_geometry.h>
@@ -48,7 +49,9 @@ namespace xcrack
     void
     parse_parameters(ParameterHandler &prm, const FunctionConstants &constants);
 
-    bool             compute         = true;
+    bool compute = true;
+    /// Estimate the error of every K (KErrorEstimator).
+    bool             error_estimate  = false;
     double           crown_inner     = 2;
     double           crown_outer     = 4;
     bool             crown_in_cells  = true;
@@ -83,12 +86,35 @@ namespace xcrack
     /// K_I, K_II, K_III from the displacement jumps over the crown (the
     /// cross-check; filled by the Simulator).
     std::array<double, 3> k_jump = {{0, 0, 0}};
+    /// Estimates of K_exact - K for K_I, K_II, K_III (KErrorEstimator;
+    /// filled by the Simulator with Error estimate = true).
+    std::array<double, 3> k_error = {{0, 0, 0}};
     /**
      * Whether the crown stays clear of the body's boundary and of the other
      * tips: the domain form assumes q = 0 on the boundary and a single
      * singularity inside; if not, K is unreliable.
      */
     bool crown_clear = true;
+  };
+
+
+
+  /**
+   * The derivatives of the K's that InteractionIntegral::compute() returns
+   * with respect to the displacement DoFs. Each K is a linear functional of
+   * u (up to a constant from the lip pressure and the body force), K(u) =
+   * dK . U + c, and dK is the load of the dual problem a(v, z) = dK . v
+   * whose solution z weights the residual of u_h in a goal-oriented
+   * estimate of K's error (KErrorEstimator).
+   */
+  struct KDerivatives
+  {
+    /// Condenses the derivatives: homogeneous Dirichlet and hanging-node
+    /// constraints (the dual problems' test space).
+    const AffineConstraints<double> *constraints = nullptr;
+    /// loads[i][m]: of K mode m (K_I, K_II, K_III) at the i-th value
+    /// compute() returns (owned entries, compressed).
+    std::vector<std::vector<TrilinosWrappers::MPI::Vector>> loads;
   };
 
 
@@ -157,7 +183,7 @@ namespace xcrack
      * a 2D tip is a front of one point) from the ghosted @p solution on
      * @p dof_handler, at the nodes of each front's FrontBasis.
      * @p lip_pressure and @p body_force (dim components) may be null.
-     * Collective.
+     * With @p derivatives, also dK/dU of every K returned. Collective.
      */
     std::vector<FrontValues<dim>>
     compute(const DoFHandler<dim>                           &dof_handler,
@@ -166,7 +192,8 @@ namespace xcrack
             const FEValuesOf                                &fe_values_of,
             const Function<dim>                             *lip_pressure,
             const LipsOf                                    &lips_of,
-            const Function<dim> *body_force = nullptr) const;
+            const Function<dim> *body_force  = nullptr,
+            KDerivatives        *derivatives = nullptr) const;
 
   private:
     const FractureParameters &parameters;
