@@ -147,21 +147,31 @@ namespace xcrack
   {
     release();
     last_matrix = &matrix;
-    if (type == "direct")
+    // A failed solve keeps nothing (what it kept would refer to a matrix
+    // that may be gone when this object is).
+    try
       {
-        solve_direct(matrix, x, rhs);
-        return 1;
-      }
+        if (type == "direct")
+          {
+            solve_direct(matrix, x, rhs);
+            return 1;
+          }
 
-    TrilinosWrappers::PreconditionAMG::AdditionalData data;
-    data.elliptic              = true;
-    data.higher_order_elements = false;
-    data.smoother_sweeps       = 2;
-    data.aggregation_threshold = 0.02;
-    data.constant_modes        = constant_modes;
-    amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-    amg->initialize(matrix, data);
-    return solve_cg(x, rhs);
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        data.elliptic              = true;
+        data.higher_order_elements = false;
+        data.smoother_sweeps       = 2;
+        data.aggregation_threshold = 0.02;
+        data.constant_modes        = constant_modes;
+        amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+        amg->initialize(matrix, data);
+        return solve_cg(x, rhs);
+      }
+    catch (...)
+      {
+        release();
+        throw;
+      }
   }
 
 

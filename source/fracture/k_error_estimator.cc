@@ -66,7 +66,11 @@ namespace xcrack
           const FiniteElement<dim> &fe = cell->get_fe();
           dofs.resize(fe.n_dofs_per_cell());
           cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          // The vertex DoFs come first (the others, of a quadratic base,
+          // are standard).
+          for (unsigned int i = 0;
+               i < cell->n_vertices() * fe.n_dofs_per_vertex();
+               ++i)
             if (Enrichment<dim>::is_enriched_dof(fe, i))
               {
                 const auto *entries =

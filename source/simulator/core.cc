@@ -406,6 +406,17 @@ namespace xcrack
     setup_system();
     assemble_system();
     const unsigned int iterations = solve();
+    // What solve() kept for the dual solves of the K error estimate goes
+    // when this function is left, also by an exception: it must not outlive
+    // the matrix it was factorized from.
+    struct Release
+    {
+      LinearSolver &solver;
+      ~Release()
+      {
+        solver.release();
+      }
+    } release{linear_solver};
 
     statistics.start_row();
     statistics.add_value("step", (unsigned long long)step);
@@ -479,8 +490,6 @@ namespace xcrack
     front_moves.clear();
     if (enrichment && fracture_parameters.compute)
       compute_fracture_parameters();
-    // The factorization served the dual solves of the K error estimate.
-    linear_solver.release();
   }
 
 

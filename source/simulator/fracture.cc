@@ -285,8 +285,11 @@ namespace xcrack
     FractureParameters wide = fracture_parameters;
     wide.crown_in_cells     = false;
     wide.crown_outer        = 0.9 * clear;
-    wide.crown_inner        = std::max(0.1 * clear, 2 * h);
-    wide_crown_cells        = (wide.crown_outer - wide.crown_inner) / h;
+    // (On a mesh too coarse for it the crown shrinks to half its width;
+    // the run then says the estimate is unreliable.)
+    wide.crown_inner =
+      std::min(std::max(0.1 * clear, 2 * h), 0.5 * wide.crown_outer);
+    wide_crown_cells = (wide.crown_outer - wide.crown_inner) / h;
 
     // K on the wide crown and its derivatives, condensed by the
     // homogeneous constraints (the dual problems' test space).

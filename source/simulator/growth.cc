@@ -183,6 +183,8 @@ namespace xcrack
     setup_system();
     assemble_system();
     solve();
+    // A trial solve reports no error estimate.
+    linear_solver.release();
     for (unsigned int c = 0; c < crack_surfaces.size(); ++c)
       crack_surfaces[c].extract(level_sets, c);
     compute_fracture_parameters(false);

@@ -22,6 +22,10 @@ namespace xcrack
                                                         distributed,
                                                         system_rhs,
                                                         constant_modes);
+    // The factorization references the matrix: keep it only for the dual
+    // solves of the K error estimate, which follow at once.
+    if (!(fracture_parameters.error_estimate && fracture_parameters.compute))
+      linear_solver.release();
     constraints.distribute(distributed);
     solution = distributed;
     return iterations;
