@@ -4,7 +4,8 @@
 
 On the 2D K benchmarks with a known K this measures, on each mesh of the
 benchmark's own refinement, the true error of K from the shipped crowns
-(2 to 4 cells) against two estimates that need no extra solve:
+(2 to 4 cells) against two estimates that need no extra solve and the
+goal-oriented one:
 
 - crowns: the interaction integral is linear in q, and the shipped q (1 to
   0 from 2 to 4 cells) is the mean of the q of the crowns 2-3 and 3-4, so
@@ -23,8 +24,10 @@ to 2 on every benchmark and mesh.
 
     contrib/build.sh release
     /usr/bin/python3 contrib/study_k_error.py [--jobs 2]
+    /usr/bin/python3 contrib/study_k_error.py --cost   # what the estimate costs
 """
 import argparse
+import statistics
 import tempfile
 from concurrent.futures import ThreadPoolExecutor
 
@@ -95,7 +98,40 @@ def main(jobs):
               f"{len(values)} cases")
 
 
+def cost(runs=3):
+    """Wall time of the K extraction (with the estimate: the wide crown,
+    the dual solves and the recovery) and of the solve on the last mesh of
+    exact_mode_I_2d with topological enrichment, estimate off and on; one
+    job at a time, medians of `runs` runs, alternating."""
+    entries = BENCHMARKS[1][1]
+    times = {False: [], True: []}
+    for _ in range(runs):
+        for on in (False, True):
+            with tempfile.TemporaryDirectory() as work:
+                text = (f"include {top}/prm/benchmarks/exact_mode_I_2d.prm\n"
+                        f"set Output directory = {work}/out\n"
+                        "subsection Output\n  set Timing summary = false\n"
+                        "end\nsubsection Fracture parameters\n"
+                        f"  set Error estimate = {str(on).lower()}\nend\n"
+                        + entries)
+                last = run_xcrack(text, work)[-1]
+            times[on].append((float(last["t_fracture"]),
+                              float(last["t_solve"]), int(last["dofs"])))
+    print("| estimate | DoFs | K extraction (s) | solve (s) |")
+    print("|---|---|---|---|")
+    for on in (False, True):
+        f = statistics.median(t[0] for t in times[on])
+        s = statistics.median(t[1] for t in times[on])
+        print(f"| {'on' if on else 'off'} | {times[on][0][2]:,} | {f:.2f} "
+              f"| {s:.2f} |")
+
+
 if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--jobs", type=int, default=2)
-    main(parser.parse_args().jobs)
+    parser.add_argument("--cost", action="store_true")
+    arguments = parser.parse_args()
+    if arguments.cost:
+        cost()
+    else:
+        main(arguments.jobs)

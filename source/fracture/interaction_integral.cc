@@ -35,9 +35,11 @@ namespace xcrack
         "Error estimate",
         "false",
         Patterns::Bool(),
-        "Estimate the error of every K: one dual solve per K (reusing the "
-        "factorization of the direct solver) and a recovery of the "
-        "stresses; written as K_I_error, ... beside the K's.");
+        "2D: estimate the error of every K (K_exact - K, written as "
+        "K_I_error, ... beside the K's): a goal-oriented estimate with "
+        "recovered stresses on a crown as wide as the body allows, one "
+        "dual solve per K with the solver's factorization; about as long "
+        "as the solve. See doc/verification.md for its effectivity.");
       prm.declare_entry("Crown radii",
                         "2, 4",
                         Patterns::Anything(),
