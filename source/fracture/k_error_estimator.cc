@@ -132,7 +132,6 @@ namespace xcrack
         // chi: 1 up to r_sup, a smooth step down to 0 at 2 r_sup.
         const double t = std::clamp(distance / front.r_sup - 1, 0., 1.);
         near.chi       = 1 - t * t * (3 - 2 * t);
-        near.fits      = (distance < front.r_inf);
         Tensor<2, dim> gradients[dim];
         aux_gradients<dim, dim>(
           unit, projection, xl, r, std::atan2(xl[1], xl[0]), gradients);
@@ -204,12 +203,12 @@ namespace xcrack
         {
           // Only cells within r_inf of a front (where the 2D dual problems
           // carry no load) fit.
-          bool near = false;
+          bool close = false;
           for (const Front &front : fronts)
-            near = near || (cell->center().distance(
-                              front.curve->project(cell->center()).foot) <
-                            front.r_inf + cell->diameter());
-          if (!near)
+            close = close || (cell->center().distance(
+                                front.curve->project(cell->center()).foot) <
+                              front.r_inf + cell->diameter());
+          if (!close)
             continue;
           std::vector<bool> inside(fronts.size(), true);
           for (const unsigned int v : cell->vertex_indices())

@@ -134,15 +134,14 @@ namespace xcrack
       hats(const double s) const;
     };
 
-    /// At a point: per front near it, the hats and the unit Williams
-    /// stresses (mode by mode), chi and whether the point fits (r < r_inf).
+    /// At a point: per front near it, the hats, the unit Williams
+    /// stresses (mode by mode) and the cut-off chi.
     struct NearFront
     {
       unsigned int                                 front;
       std::vector<std::pair<unsigned int, double>> hats;
       SymmetricTensor<2, dim>                      unit_stress[dim];
       double                                       chi;
-      bool                                         fits;
     };
 
     /// The fronts within 2 r_sup of @p x.
