@@ -211,6 +211,9 @@ main(int argc, char **argv)
   check("reference K with three values in 2D",
         valid + "subsection Fracture parameters\n"
                 "  set Reference K = 1; 0; 0\nend\n");
+  check("error estimate along a 3D front",
+        valid_3d + "subsection Fracture parameters\n"
+                   "  set Error estimate = true\nend\n");
   check("crown radii in the wrong order",
         valid + "subsection Fracture parameters\n"
                 "  set Crown radii = 4, 2\nend\n");
