@@ -39,6 +39,8 @@ namespace xcrack
    *
    * Along a 3D front, `Smoothing`, `Legendre degree` and `Front segments`
    * choose the FrontBasis on which K(s) and G(s) are discretised.
+   * `Error estimate` (2D) adds to every K the estimate of its error
+   * (KErrorEstimator, Simulator::estimate_k_errors()).
    */
   struct FractureParameters
   {
