@@ -275,16 +275,6 @@ namespace xcrack
 
 
   template <int dim>
-  std::vector<std::vector<double>>
-  KErrorEstimator<dim>::singular_coefficients(
-    const TrilinosWrappers::MPI::Vector &field) const
-  {
-    return fit({&field})[0];
-  }
-
-
-
-  template <int dim>
   unsigned int
   KErrorEstimator<dim>::slot(
     const CellIterator                                        &cell,

@@ -75,8 +75,7 @@ namespace xcrack
   {
   public:
     using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
-    using FEValuesOf =
-      std::function<const FEValues<dim> &(const CellIterator &)>;
+    using FEValuesOf   = typename InteractionIntegral<dim>::FEValuesOf;
 
     /**
      * On @p dof_handler, whose cells @p fe_values_of gives with their
@@ -103,14 +102,6 @@ namespace xcrack
     estimate(const TrilinosWrappers::MPI::Vector              &solution,
              const std::vector<TrilinosWrappers::MPI::Vector> &duals,
              Vector<float> *indicators = nullptr) const;
-
-    /**
-     * The coefficients c_m at the K nodes of each front fitted to the
-     * stress of @p field (ghosted): per front, node after node, K_I, K_II
-     * (, K_III). For the primal solution they are close to its K's.
-     */
-    std::vector<std::vector<double>>
-    singular_coefficients(const TrilinosWrappers::MPI::Vector &field) const;
 
   private:
     static constexpr unsigned int n_modes = dim;
@@ -155,8 +146,9 @@ namespace xcrack
       const std::vector<const TrilinosWrappers::MPI::Vector *> &fields,
       std::vector<std::vector<SymmetricTensor<2, dim>>>        &stresses) const;
 
-    /// The fitted coefficients of each of @p fields (see
-    /// singular_coefficients()).
+    /// The coefficients c_m at the K nodes of each front fitted to the
+    /// stress of each of @p fields: per field, per front, node after node,
+    /// K_I, K_II (, K_III) (for the primal solution close to its K's).
     std::vector<std::vector<std::vector<double>>>
     fit(const std::vector<const TrilinosWrappers::MPI::Vector *> &fields) const;
 
