@@ -166,6 +166,24 @@ namespace xcrack
 
 
 
+  template <int dim>
+  const FractureParameters &
+  SimulatorAccess<dim>::get_fracture_parameters() const
+  {
+    return simulator->fracture_parameters;
+  }
+
+
+
+  template <int dim>
+  const KErrorCells &
+  SimulatorAccess<dim>::get_k_error_cells() const
+  {
+    return simulator->k_error_cells;
+  }
+
+
+
   template class SimulatorAccess<2>;
   template class SimulatorAccess<3>;
 } // namespace xcrack

@@ -214,6 +214,16 @@ main(int argc, char **argv)
   check("error estimate along a 3D front",
         valid_3d + "subsection Fracture parameters\n"
                    "  set Error estimate = true\nend\n");
+  const std::string k_tolerance =
+    with_crack("set Start point = -1, 0.5\nset End point = 0.7, 0.5") +
+    "subsection Mesh refinement\n  set Strategy = k tolerance\nend\n";
+  check("k tolerance without a crack",
+        valid + "subsection Mesh refinement\n"
+                "  set Strategy = k tolerance\nend\n");
+  check("k tolerance without the K error estimate", k_tolerance);
+  check("k tolerance with a crown in cells",
+        k_tolerance + "subsection Fracture parameters\n"
+                      "  set Error estimate = true\nend\n");
   check("crown radii in the wrong order",
         valid + "subsection Fracture parameters\n"
                 "  set Crown radii = 4, 2\nend\n");

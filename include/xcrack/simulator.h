@@ -265,9 +265,10 @@ namespace xcrack
 
     /**
      * Refine the mesh by the strategy plugin, capped at `Maximum level`,
-     * the cracks' fields carried across (refinement.cc).
+     * the cracks' fields carried across (refinement.cc); false if the mesh
+     * did not change.
      */
-    void
+    bool
     refine_mesh();
 
     /**
@@ -282,6 +283,20 @@ namespace xcrack
     /// of the parameters, carrying the fields; false if nothing was marked.
     bool
     execute_refinement();
+
+    /// Clear the flags beyond the levels of the parameters; false if no
+    /// flag is left on any rank.
+    bool
+    cap_refinement_flags();
+
+    /**
+     * After a solve, for a strategy with a goal: report how far the goal
+     * is and, unless it is met or this is the @p last_mesh allowed, mark
+     * the cells for the next mesh. Returns whether this mesh is the last
+     * of the step (goal met, no mesh left, or nothing left to refine).
+     */
+    bool
+    check_mesh_goal(const bool last_mesh);
 
     MPI_Comm           mpi_communicator;
     ConditionalOStream pcout;
@@ -349,9 +364,9 @@ namespace xcrack
     /// K at the points of every front (fronts numbered crack after crack)
     /// and, in a growth run, their moves: the state of the current step.
     std::vector<FrontValues<dim>> front_values;
-    /// The width of the wide crown of the K error estimate, in cells of
-    /// the tip (below 4 the estimate is unreliable).
-    double                      wide_crown_cells = 0;
+    /// Where the K error estimate sits (its indicators are emptied when
+    /// the mesh changes).
+    KErrorCells                 k_error_cells;
     std::vector<FrontMove<dim>> front_moves;
 
     /// How far the loads can move the body, in order of magnitude

@@ -7,6 +7,7 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 
 #include <xcrack/parsed_function.h>
 #include <xcrack/plugins.h>
@@ -34,8 +35,30 @@ namespace xcrack
   template <int dim>
   struct FrontMove;
   class Material;
+  struct FractureParameters;
   template <int dim>
   class BoundaryConditions;
+
+  /**
+   * What the K error estimate of a solve (`Fracture parameters/Error
+   * estimate`) leaves for a refinement strategy: where the error sits, and
+   * how well the mesh resolves the estimate's own dual problems.
+   */
+  struct KErrorCells
+  {
+    /// Each active cell's share of the estimate, summed over the K's (by
+    /// active cell index, locally owned cells); empty until an estimate
+    /// ran on the current mesh.
+    Vector<float> indicators;
+    /// The wide crown the estimate is applied to: these radii around
+    /// every tip.
+    double crown_inner = 0, crown_outer = 0;
+    /// Its width in its coarsest cells (under 4 the estimate is not to be
+    /// trusted at all).
+    double crown_cells = 0;
+  };
+
+
 
   /**
    * Read access to the state of the Simulator for plugins (ASPECT's
@@ -121,6 +144,13 @@ namespace xcrack
     /// before or without growth).
     const std::vector<FrontMove<dim>> &
     get_front_moves() const;
+
+    const FractureParameters &
+    get_fracture_parameters() const;
+
+    /// Where the K error estimate of the last solve sits in the mesh.
+    const KErrorCells &
+    get_k_error_cells() const;
 
   private:
     const Simulator<dim> *simulator = nullptr;

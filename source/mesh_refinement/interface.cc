@@ -18,7 +18,9 @@ namespace xcrack
           Patterns::Integer(1, 50),
           "The initial crack (step 0) is solved on this many meshes, each "
           "refined from the previous one by the Strategy: a convergence "
-          "study, or a mesh fitted to the front before the cracks grow.");
+          "study, or a mesh fitted to the front before the cracks grow. "
+          "With a Strategy that has a goal (k tolerance): the most meshes "
+          "of each step, fewer once the goal is met.");
         prm.declare_entry(
           "Strategy",
           "global",

@@ -110,6 +110,8 @@ namespace xcrack
   void
   Simulator<dim>::load_mesh(const std::string &checkpoint)
   {
+    // Indexed by cells that the load renumbers.
+    k_error_cells.indicators.reinit(0);
     // load() wants the coarse mesh alone.
     triangulation.clear();
     mesh_description.create(triangulation, /*refine=*/false);

@@ -76,11 +76,13 @@ namespace xcrack
       }
     exact_solution = ExactSolution::create<dim>(prm, constants, material);
     boundary_conditions.parse_parameters(prm, constants, exact_solution);
+    cracks.parse_parameters(prm);
+    fracture_parameters.parse_parameters(prm, constants);
+    // (A strategy may read the fracture parameters: k tolerance needs the
+    // K error estimate.)
     refinement_parameters.parse_parameters(prm);
     mesh_refinement =
       MeshRefinement::create<dim>(refinement_parameters, prm, *this);
-    cracks.parse_parameters(prm);
-    fracture_parameters.parse_parameters(prm, constants);
     check_input(dim == 2 ? !fracture_parameters.reference_3d :
                            !fracture_parameters.reference_2d,
                 "Fracture parameters/Reference K: give " +
@@ -359,28 +361,39 @@ namespace xcrack
       }
 
     std::string key;
+    const bool  goal = mesh_refinement->has_goal();
     for (bool stop = false; !stop;)
       {
         // Step 0 may be solved on several successively refined meshes (a
         // convergence study of the initial crack); every step after it
-        // on the mesh its fronts adapted.
+        // on the mesh its fronts adapted. A strategy with a goal refines
+        // every step until the goal is met, on at most Number of meshes.
         const unsigned int n_meshes =
-          (step == 0 ? refinement_parameters.n_meshes : 1);
+          (step == 0 || goal ? refinement_parameters.n_meshes : 1);
         for (unsigned int mesh = 0; mesh < n_meshes; ++mesh)
           {
             if (mesh > 0)
               {
                 TimerOutput::Scope t(*timer, "refine");
-                refine_mesh();
+                // (check_mesh_goal() marked the cells already.)
+                if (goal)
+                  execute_refinement();
+                else
+                  refine_mesh();
               }
             solve_and_report(mesh, n_meshes);
+            bool last = (mesh + 1 == n_meshes);
+            if (goal)
+              last = check_mesh_goal(last);
             // The last mesh of a growth step first computes the moves (its
             // front file shows them).
-            if (propagation.enabled() && mesh + 1 == n_meshes)
+            if (propagation.enabled() && last)
               stop = grow();
             key = Utilities::int_to_string(step, 3) +
                   (n_meshes > 1 ? "." + Utilities::int_to_string(mesh, 2) : "");
             finish_solve(key);
+            if (last)
+              break;
           }
         if (!propagation.enabled() || stop)
           break;

@@ -121,9 +121,9 @@ namespace xcrack
               << std::defaultfloat << std::endl;
           if (estimate)
             out << "    estimated errors (K_exact - K): K_I " << std::scientific
-                << std::setprecision(2) << v.k_error[0] << ", K_II "
-                << v.k_error[1] << std::defaultfloat
-                << (wide_crown_cells < 4 ?
+                << std::setprecision(2) << rounded(v.k_error[0]) << ", K_II "
+                << rounded(v.k_error[1]) << std::defaultfloat
+                << (k_error_cells.crown_cells < 4 ?
                       " (unreliable: the mesh is too coarse for the dual "
                       "problem, its crown is less than 4 cells wide)" :
                       "")
@@ -140,7 +140,8 @@ namespace xcrack
               statistics.add_value("K_I_estimate" + suffix, v.k_error[0]);
               statistics.add_value("K_II_estimate" + suffix, v.k_error[1]);
               if (i == 0)
-                statistics.add_value("estimate_crown_cells", wide_crown_cells);
+                statistics.add_value("estimate_crown_cells",
+                                     k_error_cells.crown_cells);
             }
         }
     else
@@ -289,7 +290,22 @@ namespace xcrack
     // the run then says the estimate is unreliable.)
     wide.crown_inner =
       std::min(std::max(0.1 * clear, 2 * h), 0.5 * wide.crown_outer);
-    wide_crown_cells = (wide.crown_outer - wide.crown_inner) / h;
+    // Its width in its coarsest cells (on a graded mesh, not the tip's).
+    double h_crown = h;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto &front : fronts)
+          {
+            const double r    = cell->center().distance(front[0].position);
+            const double half = cell->diameter() / 2;
+            if (r + half > wide.crown_inner && r - half < wide.crown_outer)
+              h_crown =
+                std::max(h_crown, cell->diameter() / std::sqrt(double(dim)));
+          }
+    h_crown                   = Utilities::MPI::max(h_crown, mpi_communicator);
+    k_error_cells.crown_inner = wide.crown_inner;
+    k_error_cells.crown_outer = wide.crown_outer;
+    k_error_cells.crown_cells = (wide.crown_outer - wide.crown_inner) / h_crown;
 
     // K on the wide crown and its derivatives, condensed by the
     // homogeneous constraints (the dual problems' test space).
@@ -330,7 +346,8 @@ namespace xcrack
                                          fe_values_of,
                                          fronts,
                                          wide_values);
-    const std::vector<double>  errors = estimator.estimate(solution, duals);
+    const std::vector<double>  errors =
+      estimator.estimate(solution, duals, &k_error_cells.indicators);
     // K_exact - K = (K_wide - K) + (K_exact - K_wide).
     unsigned int d = 0;
     for (unsigned int i = 0; i < front_values.size(); ++i)
@@ -340,8 +357,23 @@ namespace xcrack
         const double            differences[3] = {w.k_I - v.k_I,
                                                   w.k_II - v.k_II,
                                                   w.k_III - v.k_III};
+        double                  difference     = 0;
         for (unsigned int m = 0; m < derivatives.loads[i].size(); ++m)
-          front_values[i].k_error[m] = differences[m] + errors[d++];
+          {
+            front_values[i].k_error[m] = differences[m] + errors[d++];
+            difference += std::abs(differences[m]);
+          }
+        // The difference is the error of the crown at the tip: the
+        // indicators share it among the cells within that crown.
+        std::vector<unsigned int> crown_cells;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              cell->center().distance(v.point.position) < v.r_sup)
+            crown_cells.push_back(cell->active_cell_index());
+        const double n_crown_cells =
+          Utilities::MPI::sum(double(crown_cells.size()), mpi_communicator);
+        for (const unsigned int c : crown_cells)
+          k_error_cells.indicators[c] += difference / n_crown_cells;
       }
   }
 

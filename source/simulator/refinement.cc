@@ -4,7 +4,7 @@ namespace xcrack
 {
   template <int dim>
   bool
-  Simulator<dim>::execute_refinement()
+  Simulator<dim>::cap_refinement_flags()
   {
     bool marked = false;
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -19,8 +19,19 @@ namespace xcrack
           marked =
             marked || cell->refine_flag_set() || cell->coarsen_flag_set();
         }
-    if (!Utilities::MPI::logical_or(marked, mpi_communicator))
+    return Utilities::MPI::logical_or(marked, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::execute_refinement()
+  {
+    if (!cap_refinement_flags())
       return false;
+    // Indexed by the cells of the mesh about to change.
+    k_error_cells.indicators.reinit(0);
     // The cracks' fields follow the mesh (before the cracks move, the next
     // set-up interpolates their shapes again).
     triangulation.prepare_coarsening_and_refinement();
@@ -35,11 +46,45 @@ namespace xcrack
 
 
   template <int dim>
-  void
+  bool
   Simulator<dim>::refine_mesh()
   {
     mesh_refinement->mark(triangulation);
-    execute_refinement();
+    return execute_refinement();
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::check_mesh_goal(const bool last_mesh)
+  {
+    const auto status = mesh_refinement->check_goal();
+    statistics.add_value("goal_met", (unsigned long long)status.met);
+    if (detailed_screen)
+      pcout << "  mesh goal: " << status.text << std::endl;
+    if (status.met)
+      return true;
+    if (last_mesh)
+      {
+        pcout << "  Warning: the goal of the refinement is not met after "
+              << refinement_parameters.n_meshes
+              << " meshes (Mesh refinement/Number of meshes); the results of "
+                 "the last one stand."
+              << std::endl;
+        return true;
+      }
+    // Mark now, so that a mesh that cannot change (every marked cell at
+    // Maximum level) ends the step here rather than being solved again.
+    mesh_refinement->mark(triangulation);
+    if (cap_refinement_flags())
+      return false;
+    pcout << "  Warning: the goal of the refinement is not met and the mesh "
+             "cannot be refined further where the error sits (Mesh "
+             "refinement/Maximum level = "
+          << refinement_parameters.max_level
+          << "); the results of this mesh stand." << std::endl;
+    return true;
   }
 
 
@@ -48,6 +93,14 @@ namespace xcrack
   void
   Simulator<dim>::adapt_mesh_to_fronts()
   {
+    // A strategy with a goal marks once, from what the last solve left
+    // (k tolerance: coarsening where the error no longer sits); it refines
+    // within the next step, after that step's first solve.
+    if (mesh_refinement->has_goal())
+      {
+        refine_mesh();
+        return;
+      }
     // A strategy that does not follow the fronts (global, kelly, region)
     // leaves the mesh as it is once the cracks grow.
     if (!mesh_refinement->follows_fronts())

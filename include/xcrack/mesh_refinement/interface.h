@@ -47,6 +47,34 @@ namespace xcrack
       {
         return false;
       }
+
+      /// Whether the mesh of the last solve meets a strategy's goal, and a
+      /// line that says how far it is from it.
+      struct GoalStatus
+      {
+        bool        met = false;
+        std::string text;
+      };
+
+      /**
+       * Whether the strategy refines towards a goal (a tolerance): the
+       * Simulator then solves each step on up to `Number of meshes` meshes
+       * and stops refining as soon as check_goal() says the goal is met.
+       * Strategies without a goal solve step 0 on exactly `Number of
+       * meshes` meshes and every later step on one.
+       */
+      virtual bool
+      has_goal() const
+      {
+        return false;
+      }
+
+      /// After a solve (for a strategy with a goal): is the goal met?
+      virtual GoalStatus
+      check_goal() const
+      {
+        return {};
+      }
     };
 
 

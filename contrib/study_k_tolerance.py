@@ -1,0 +1,98 @@
+#!/usr/bin/env python3
+"""Refinement to a K tolerance against uniform refinement (issue 16, part 3).
+
+For 2D benchmarks with a known K (topological tip enrichment, the crowns as
+lengths, 0.1 to 0.3 from the tip), prints:
+- uniform refinement: per mesh, cells, DoFs and the K error (largest over
+  the tips and modes, relative to the largest |K|);
+- `Mesh refinement/Strategy = k tolerance` for several tolerances and
+  `Crown cells`: the meshes it took, the cells and DoFs of the last one, the
+  true and the estimated K error there, whether the goal was met, and the
+  wall time of the whole run (the sum of its phases).
+
+    /usr/bin/python3 contrib/study_k_tolerance.py      # about 3 minutes
+"""
+import argparse
+import math
+import tempfile
+from concurrent.futures import ThreadPoolExecutor
+
+from xcrack_runs import run_xcrack, top
+
+TOPOLOGICAL = ("subsection Enrichment\n  set Tip enrichment = topological\n"
+               "  set Enrichment radius = 0\nend\n")
+# benchmark, reference (K_I, K_II), number of tips, uniform meshes
+BENCHMARKS = [
+    ("exact_mode_I_2d", (1.0, 0.0), 1, 6),
+    ("sif_inclined_2d", (1.32934039, 0.76749503), 2, 5),
+]
+PHASES = ["t_setup", "t_assemble", "t_solve", "t_errors", "t_fracture",
+          "t_output", "t_refine"]
+
+
+def run(benchmark, reference, refinement):
+    with tempfile.TemporaryDirectory() as work:
+        text = (f"include {top}/prm/benchmarks/{benchmark}.prm\n"
+                f"set Output directory = {work}/out\n"
+                "subsection Output\n  set Timing summary = false\nend\n"
+                + TOPOLOGICAL +
+                "subsection Fracture parameters\n"
+                "  set Crown unit = absolute\n  set Crown radii = 0.1, 0.3\n"
+                f"  set Reference K = {reference[0]}; {reference[1]}\n"
+                "  set Error estimate = true\nend\n"
+                "subsection Mesh refinement\n" + refinement + "end\n")
+        return run_xcrack(text, work)
+
+
+def k_errors(row, reference, n_tips):
+    """True and estimated K errors (largest over tips and modes) relative to
+    the largest |K| of the reference."""
+    scale = math.hypot(*reference)
+    true = estimated = 0
+    for t in range(1, n_tips + 1):
+        for mode, ref in zip(["K_I", "K_II"], reference):
+            k = float(row[f"{mode}_{t}"])
+            # Symmetric tips: the second tip's K_II has the same sign here.
+            true = max(true, abs(ref - k) / scale)
+            estimated = max(estimated,
+                            abs(float(row[f"{mode}_estimate_{t}"])) / scale)
+    return true, estimated
+
+
+def main(jobs):
+    for benchmark, reference, n_tips, n_uniform in BENCHMARKS:
+        print(f"\n{benchmark} (topological, crown 0.1 to 0.3)\n")
+        print("| refinement | meshes | cells | DoFs | K error | estimated "
+              "| goal met | time (s) |")
+        print("|---|---|---|---|---|---|---|---|")
+        cases = [("uniform", f"  set Number of meshes = {n_uniform}\n")]
+        for crown_cells in [8, 16]:
+            for tolerance in [1e-2, 3e-3, 1e-3, 3e-4]:
+                cases.append((
+                    f"k tolerance {tolerance:g}, crown cells {crown_cells}",
+                    "  set Number of meshes = 20\n"
+                    "  set Strategy = k tolerance\n"
+                    "  subsection K tolerance\n"
+                    f"    set Tolerance = {tolerance}\n"
+                    f"    set Crown cells = {crown_cells}\n  end\n"))
+        with ThreadPoolExecutor(jobs) as pool:
+            results = [pool.submit(run, benchmark, reference, c[1])
+                       for c in cases]
+            results = [r.result() for r in results]
+        for (label, _), rows in zip(cases, results):
+            shown = rows if label == "uniform" else rows[-1:]
+            time = sum(float(r[p]) for r in rows for p in PHASES)
+            for row in shown:
+                true, estimated = k_errors(row, reference, n_tips)
+                met = row.get("goal_met", "")
+                print(f"| {label} | {len(rows) if shown != rows else int(row['mesh']) + 1} "
+                      f"| {int(row['cells']):,} | {int(row['dofs']):,} "
+                      f"| {true:.2e} | {estimated:.2e} | "
+                      f"{'yes' if met == '1' else 'no' if met else ''} "
+                      f"| {time if shown != rows else '':{'.1f' if shown != rows else ''}} |")
+
+
+if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--jobs", type=int, default=2)
+    main(parser.parse_args().jobs)

@@ -1,0 +1,82 @@
+#ifndef xcrack_mesh_refinement_k_tolerance_h
+#define xcrack_mesh_refinement_k_tolerance_h
+
+#include <xcrack/mesh_refinement/interface.h>
+#include <xcrack/simulator_access.h>
+
+#include <utility>
+
+namespace xcrack
+{
+  namespace MeshRefinement
+  {
+    /**
+     * `k tolerance`: refine (and coarsen) until the estimated error of every
+     * K is below a tolerance (`subsection K tolerance`), then stop; in a
+     * growth run, every step. This is the one number by which a user trades
+     * speed for accuracy: the mesh is as fine as the K's need, where they
+     * need it, and no finer.
+     *
+     * The error and where it sits come from the goal-oriented K error
+     * estimate (`Fracture parameters/Error estimate`, KErrorEstimator): the
+     * cells' shares of the estimate of K on a wide crown, plus the
+     * difference between that K and the reported one shared among the
+     * cells of the reported crown. Marking is Doerfler's: the fewest cells
+     * that hold `Refine fraction` of the summed shares are refined, those
+     * holding `Coarsen fraction` with the smallest shares coarsened (no
+     * refinement by the shares once the estimate is below the tolerance
+     * and only a crown is too coarse to trust it). Once the goal is met,
+     * the next step starts by coarsening only (the cells the error has
+     * left behind, as the crack grows).
+     *
+     * Both K's are only as good as the mesh resolves their crowns: the
+     * estimate's effectivity was measured 0.1-0.6 with its crown 2-12
+     * cells wide and about 0.9 from 25 cells on, and a K whose crown spans
+     * a few cells of a graded mesh varies by percents (doc/verification.md).
+     * So the cells of either crown coarser than its width / `Crown cells`
+     * are refined as well, and never coarsened beyond it; and the K's
+     * crown must be given as lengths (a crown in cells would shrink with
+     * the tip's cells).
+     *
+     * The goal: max over tips and modes |K_exact - K|_estimated <=
+     * Tolerance * max over tips sqrt(K_I^2 + K_II^2), with both crowns
+     * `Crown cells` wide. Relative to
+     * the largest K rather than to each tip's own, so that a tip whose K
+     * vanishes (a closed or shielded one) does not ask for endless
+     * refinement.
+     */
+    template <int dim>
+    class KTolerance : public Interface<dim>, public SimulatorAccess<dim>
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      void
+      parse_parameters(ParameterHandler &prm) override;
+
+      void
+      mark(parallel::distributed::Triangulation<dim> &triangulation)
+        const override;
+
+      bool
+      has_goal() const override;
+
+      typename Interface<dim>::GoalStatus
+      check_goal() const override;
+
+    private:
+      /// The largest estimated K error relative to the largest |K|, and
+      /// the width of the narrowest crown in its coarsest cells.
+      std::pair<double, double>
+      distance_to_goal() const;
+
+      double tolerance        = 0.01;
+      double refine_fraction  = 0.5;
+      double coarsen_fraction = 0.02;
+      double crown_cells      = 8;
+    };
+  } // namespace MeshRefinement
+} // namespace xcrack
+
+#endif

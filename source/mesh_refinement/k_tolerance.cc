@@ -1,0 +1,217 @@
+#include <deal.II/distributed/grid_refinement.h>
+
+#include <xcrack/crack/crack_set.h>
+#include <xcrack/fracture/interaction_integral.h>
+#include <xcrack/input_error.h>
+#include <xcrack/mesh_refinement/k_tolerance.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace xcrack
+{
+  namespace MeshRefinement
+  {
+    template <int dim>
+    void
+    KTolerance<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("K tolerance");
+      {
+        prm.declare_entry(
+          "Tolerance",
+          "0.01",
+          Patterns::Double(0),
+          "The goal: the estimated error of every K, relative to the "
+          "largest |K| = sqrt(K_I^2 + K_II^2) over the tips, at most this. "
+          "Needs Fracture parameters/Error estimate = true (2D).");
+        prm.declare_entry("Refine fraction",
+                          "0.5",
+                          Patterns::Double(0, 1),
+                          "Refine the fewest cells that hold this fraction "
+                          "of the estimated K error.");
+        prm.declare_entry("Coarsen fraction",
+                          "0.02",
+                          Patterns::Double(0, 1),
+                          "Coarsen the cells with the smallest shares of the "
+                          "estimated K error that hold this fraction of it.");
+        prm.declare_entry(
+          "Crown cells",
+          "8",
+          Patterns::Double(4),
+          "The goal is trusted once each crown (the K's and the wider one "
+          "of the estimate's dual problems) spans this many of its coarsest "
+          "cells; coarser cells there are refined too. More costs cells "
+          "away from the tip and makes the estimate more accurate (16: two "
+          "to three times the cells; doc/verification.md).");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    void
+    KTolerance<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      const Plugins::ScopedSubsection scope(prm, "K tolerance");
+      tolerance                  = prm.get_double("Tolerance");
+      refine_fraction            = prm.get_double("Refine fraction");
+      coarsen_fraction           = prm.get_double("Coarsen fraction");
+      crown_cells                = prm.get_double("Crown cells");
+      const std::string strategy = "Mesh refinement/Strategy = k tolerance";
+      check_input(tolerance > 0,
+                  "Mesh refinement/K tolerance/Tolerance must be positive.");
+      check_input(refine_fraction > 0 &&
+                    refine_fraction + coarsen_fraction <= 1,
+                  "Mesh refinement/K tolerance/Refine fraction must be "
+                  "positive, and Refine fraction + Coarsen fraction must "
+                  "not exceed 1.");
+      check_input(dim == 2,
+                  strategy +
+                    ": the K error estimate it refines by exists only at 2D "
+                    "tips so far.");
+      check_input(this->get_initial_cracks().size() > 0,
+                  strategy + " needs a crack (Cracks/Number of cracks = 0).");
+      const FractureParameters &fracture = this->get_fracture_parameters();
+      check_input(fracture.compute && fracture.error_estimate,
+                  strategy +
+                    " refines by the estimated K errors: set Fracture "
+                    "parameters/Compute = true and Error estimate = true.");
+      check_input(!fracture.crown_in_cells,
+                  strategy +
+                    " with Fracture parameters/Crown unit = cells: the "
+                    "crown would shrink with the tip's cells as they are "
+                    "refined, and its K on a graded mesh varies by percents "
+                    "(doc/verification.md); set Crown unit = absolute and "
+                    "Crown radii as lengths.");
+    }
+
+
+
+    template <int dim>
+    bool
+    KTolerance<dim>::has_goal() const
+    {
+      return true;
+    }
+
+
+
+    template <int dim>
+    std::pair<double, double>
+    KTolerance<dim>::distance_to_goal() const
+    {
+      const auto &values = this->get_front_values();
+      double      k_max = 0, error_max = 0;
+      for (const FrontValues<dim> &v : values)
+        {
+          k_max = std::max(k_max, std::hypot(v.k_I, v.k_II));
+          for (unsigned int m = 0; m < dim; ++m)
+            error_max = std::max(error_max, std::abs(v.k_error[m]));
+        }
+      const double ratio =
+        (k_max > 0 ? error_max / k_max : std::numeric_limits<double>::max());
+      // The K's crowns, as wide in their coarsest cells as the estimate's.
+      double crown = this->get_k_error_cells().crown_cells;
+      for (const FrontValues<dim> &v : values)
+        {
+          double h = 0;
+          for (const auto &cell :
+               this->get_triangulation().active_cell_iterators())
+            if (cell->is_locally_owned())
+              {
+                const double r    = cell->center().distance(v.point.position);
+                const double half = cell->diameter() / 2;
+                if (r + half > v.r_inf && r - half < v.r_sup)
+                  h = std::max(h, cell->diameter() / std::sqrt(double(dim)));
+              }
+          h = Utilities::MPI::max(h, this->get_mpi_communicator());
+          if (h > 0)
+            crown = std::min(crown, (v.r_sup - v.r_inf) / h);
+        }
+      return {ratio, crown};
+    }
+
+
+
+    template <int dim>
+    typename Interface<dim>::GoalStatus
+    KTolerance<dim>::check_goal() const
+    {
+      // A crack without a front (it runs through the body) has no K.
+      if (this->get_front_values().empty())
+        return {true, "no crack front, no K to refine for"};
+      const auto [ratio, crown]   = distance_to_goal();
+      const bool         reliable = (crown >= crown_cells);
+      std::ostringstream text;
+      text << "largest estimated K error " << std::setprecision(3)
+           << 100 * ratio << " % of the largest |K| (tolerance "
+           << 100 * tolerance << " %)";
+      if (!reliable)
+        text << ", not trusted yet (a crown spans " << std::setprecision(2)
+             << crown << " of its cells, " << crown_cells << " asked)";
+      const bool met = reliable && ratio <= tolerance;
+      text << (met ? ": met" : ": refining");
+      return {met, text.str()};
+    }
+
+
+
+    template <int dim>
+    void
+    KTolerance<dim>::mark(
+      parallel::distributed::Triangulation<dim> &triangulation) const
+    {
+      const KErrorCells &estimate = this->get_k_error_cells();
+      // No estimate on this mesh (a resumed run, before its first solve),
+      // or no front to estimate for.
+      if (estimate.indicators.size() != triangulation.n_active_cells() ||
+          this->get_front_values().empty())
+        return;
+      // Once the goal is met (the first marking of the next step), only
+      // coarsen where the error no longer sits; with the estimate below
+      // the tolerance but a crown too coarse to trust it, refine only the
+      // crowns.
+      const auto [ratio, crown] = distance_to_goal();
+      const bool met            = (ratio <= tolerance && crown >= crown_cells);
+      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_fraction(
+        triangulation,
+        estimate.indicators,
+        ratio <= tolerance ? 0. : refine_fraction,
+        coarsen_fraction,
+        VectorTools::L1_norm);
+
+      // The cells of both crowns: at most its width / Crown cells across,
+      // and no coarsening that makes a parent (twice the size, its centre
+      // up to half a diameter away) meet a crown coarser than that.
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const FrontValues<dim> &v : this->get_front_values())
+            for (const auto &[inner, outer] :
+                 {std::make_pair(estimate.crown_inner, estimate.crown_outer),
+                  std::make_pair(v.r_inf, v.r_sup)})
+              {
+                const double r = cell->center().distance(v.point.position);
+                const double diameter = cell->diameter();
+                const auto   meets    = [&](const double half) {
+                  return r + half > inner && r - half < outer;
+                };
+                const double h     = diameter / std::sqrt(double(dim));
+                const double h_max = (outer - inner) / crown_cells;
+                if (2 * h > h_max && meets(1.5 * diameter))
+                  cell->clear_coarsen_flag();
+                if (h > h_max && !met && meets(diameter / 2))
+                  cell->set_refine_flag();
+              }
+    }
+
+    XCRACK_REGISTER_PLUGIN(Interface,
+                           KTolerance,
+                           "k tolerance",
+                           "refine (and coarsen) until the estimated error "
+                           "of every K is below a tolerance, every step "
+                           "(subsection K tolerance; 2D).")
+  } // namespace MeshRefinement
+} // namespace xcrack
