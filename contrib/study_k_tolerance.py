@@ -10,13 +10,19 @@ lengths, 0.1 to 0.3 from the tip), prints:
   true and the estimated K error there, whether the goal was met, and the
   wall time of the whole run (the sum of its phases).
 
-    /usr/bin/python3 contrib/study_k_tolerance.py      # about 3 minutes
+    /usr/bin/python3 contrib/study_k_tolerance.py            # 40 s
+    /usr/bin/python3 contrib/study_k_tolerance.py --picture  # 10 s
+
+`--picture` draws doc/figures/k_tolerance_meshes.png: the meshes on which
+Case 1 (tolerance 3e-4) and the inclined crack (1e-3) met their goal.
 """
 import argparse
 import math
+import os
 import tempfile
 from concurrent.futures import ThreadPoolExecutor
 
+from study_adaptivity import read_cells
 from xcrack_runs import run_xcrack, top
 
 TOPOLOGICAL = ("subsection Enrichment\n  set Tip enrichment = topological\n"
@@ -30,18 +36,26 @@ PHASES = ["t_setup", "t_assemble", "t_solve", "t_errors", "t_fracture",
           "t_output", "t_refine"]
 
 
-def run(benchmark, reference, refinement):
+def run(benchmark, reference, refinement, picture=False):
+    """The rows of statistics.csv; with `picture`, and the corners of the
+    last mesh's cells."""
     with tempfile.TemporaryDirectory() as work:
         text = (f"include {top}/prm/benchmarks/{benchmark}.prm\n"
                 f"set Output directory = {work}/out\n"
-                "subsection Output\n  set Timing summary = false\nend\n"
+                "subsection Output\n  set Timing summary = false\n"
+                f"  set Write vtu = {'true' if picture else 'false'}\nend\n"
                 + TOPOLOGICAL +
                 "subsection Fracture parameters\n"
                 "  set Crown unit = absolute\n  set Crown radii = 0.1, 0.3\n"
                 f"  set Reference K = {reference[0]}; {reference[1]}\n"
                 "  set Error estimate = true\nend\n"
                 "subsection Mesh refinement\n" + refinement + "end\n")
-        return run_xcrack(text, work)
+        rows = run_xcrack(text, work)
+        if not picture:
+            return rows
+        last = int(rows[-1]["mesh"])
+        return rows, read_cells(
+            f"{work}/out/solution-000.{last:02d}.0000.vtu")
 
 
 def k_errors(row, reference, n_tips):
@@ -70,11 +84,9 @@ def main(jobs):
             for tolerance in [1e-2, 3e-3, 1e-3, 3e-4]:
                 cases.append((
                     f"k tolerance {tolerance:g}, crown cells {crown_cells}",
-                    "  set Number of meshes = 20\n"
-                    "  set Strategy = k tolerance\n"
-                    "  subsection K tolerance\n"
-                    f"    set Tolerance = {tolerance}\n"
-                    f"    set Crown cells = {crown_cells}\n  end\n"))
+                    k_tolerance(tolerance).replace(
+                        "  end\n",
+                        f"    set Crown cells = {crown_cells}\n  end\n")))
         with ThreadPoolExecutor(jobs) as pool:
             results = [pool.submit(run, benchmark, reference, c[1])
                        for c in cases]
@@ -92,7 +104,48 @@ def main(jobs):
                       f"| {time if shown != rows else '':{'.1f' if shown != rows else ''}} |")
 
 
+def k_tolerance(tolerance):
+    return ("  set Number of meshes = 20\n  set Strategy = k tolerance\n"
+            f"  subsection K tolerance\n    set Tolerance = {tolerance}\n"
+            "  end\n")
+
+
+def picture(jobs):
+    cases = [("exact_mode_I_2d", (1.0, 0.0), 3e-4, [(-1, 0), (0, 0)]),
+             ("sif_inclined_2d", (1.32934039, 0.76749503), 1e-3,
+              [(-0.866, -0.5), (0.866, 0.5)])]
+    with ThreadPoolExecutor(jobs) as pool:
+        results = [pool.submit(run, b, r, k_tolerance(t), True)
+                   for b, r, t, _ in cases]
+        results = [r.result() for r in results]
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.collections import PolyCollection
+    figure, axes = plt.subplots(1, 2, figsize=(10, 5))
+    for axis, (benchmark, _, tolerance, crack), (rows, cells) in zip(
+            axes, cases, results):
+        axis.add_collection(PolyCollection(cells, facecolors="none",
+                                           edgecolors="k", linewidths=0.15))
+        axis.plot(*zip(*crack), "r-", linewidth=1)
+        corners = [p for cell in cells for p in cell]
+        axis.set_xlim(min(p[0] for p in corners), max(p[0] for p in corners))
+        axis.set_ylim(min(p[1] for p in corners), max(p[1] for p in corners))
+        axis.set_aspect("equal")
+        axis.set_title(f"{benchmark}, tolerance {tolerance:g}: "
+                       f"{len(cells):,} cells", fontsize=10)
+    figure.tight_layout()
+    path = os.path.join(top, "doc", "figures", "k_tolerance_meshes.png")
+    figure.savefig(path, dpi=150)
+    print(f"wrote {path}")
+
+
 if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--jobs", type=int, default=2)
-    main(parser.parse_args().jobs)
+    parser.add_argument("--picture", action="store_true")
+    arguments = parser.parse_args()
+    if arguments.picture:
+        picture(arguments.jobs)
+    else:
+        main(arguments.jobs)

@@ -245,6 +245,11 @@ namespace xcrack
      * (KErrorEstimator, a dual solve per K), and the difference of the two
      * K's.
      */
+    /// (r_inf, r_sup) of the estimate's wide crown around @p tips: as wide
+    /// as the boundary and the other tips allow (fracture.cc).
+    std::pair<double, double>
+    wide_crown(const std::vector<Point<dim>> &tips) const;
+
     void
     estimate_k_errors(
       const std::vector<std::vector<FrontPoint<dim>>>     &fronts,
@@ -272,9 +277,9 @@ namespace xcrack
     refine_mesh();
 
     /**
-     * After the cracks moved: refine (and coarsen) with the strategy until
-     * it marks nothing (a strategy that follows the fronts) or once
-     * (refinement.cc).
+     * After the cracks moved: refine (and coarsen) with a strategy that
+     * follows the fronts until it marks nothing; other strategies leave
+     * the mesh as it is (refinement.cc).
      */
     void
     adapt_mesh_to_fronts();

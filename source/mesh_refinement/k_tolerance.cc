@@ -1,6 +1,7 @@
 #include <deal.II/distributed/grid_refinement.h>
 
 #include <xcrack/crack/crack_set.h>
+#include <xcrack/crack/level_set_fields.h>
 #include <xcrack/fracture/interaction_integral.h>
 #include <xcrack/input_error.h>
 #include <xcrack/mesh_refinement/k_tolerance.h>
@@ -100,6 +101,54 @@ namespace xcrack
 
 
     template <int dim>
+    std::vector<double>
+    KTolerance<dim>::front_distances() const
+    {
+      const auto                &triangulation = this->get_triangulation();
+      const LevelSetFields<dim> &fields        = this->get_level_set_fields();
+      std::vector<std::vector<double>> lsn, lst;
+      for (unsigned int c = 0; c < fields.n_cracks(); ++c)
+        {
+          lsn.push_back(fields.vertex_values(c, true));
+          lst.push_back(fields.vertex_values(c, false));
+        }
+      std::vector<double> distances(triangulation.n_active_cells(),
+                                    std::numeric_limits<double>::max());
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (unsigned int c = 0; c < fields.n_cracks(); ++c)
+            {
+              double n = 0, t = 0;
+              for (const unsigned int v : cell->vertex_indices())
+                {
+                  n += lsn[c][cell->vertex_index(v)] / cell->n_vertices();
+                  t += lst[c][cell->vertex_index(v)] / cell->n_vertices();
+                }
+              double &d = distances[cell->active_cell_index()];
+              d         = std::min(d, std::hypot(n, t));
+            }
+      return distances;
+    }
+
+
+
+    template <int dim>
+    std::vector<std::pair<double, double>>
+    KTolerance<dim>::crowns() const
+    {
+      const KErrorCells        &estimate = this->get_k_error_cells();
+      const FractureParameters &fracture = this->get_fracture_parameters();
+      std::vector<std::pair<double, double>> radii = {
+        {fracture.crown_inner, fracture.crown_outer}};
+      // (None before the first estimate of a resumed run.)
+      if (estimate.crown_outer > 0)
+        radii.emplace_back(estimate.crown_inner, estimate.crown_outer);
+      return radii;
+    }
+
+
+
+    template <int dim>
     std::pair<double, double>
     KTolerance<dim>::distance_to_goal() const
     {
@@ -113,23 +162,25 @@ namespace xcrack
         }
       const double ratio =
         (k_max > 0 ? error_max / k_max : std::numeric_limits<double>::max());
-      // The K's crowns, as wide in their coarsest cells as the estimate's.
-      double crown = this->get_k_error_cells().crown_cells;
-      for (const FrontValues<dim> &v : values)
+      // Each crown's width in its coarsest cells (the distances those of
+      // mark(), so that what this measures, mark() refines).
+      const std::vector<double> distances = front_distances();
+      double                    crown     = std::numeric_limits<double>::max();
+      for (const auto &[inner, outer] : crowns())
         {
           double h = 0;
           for (const auto &cell :
                this->get_triangulation().active_cell_iterators())
             if (cell->is_locally_owned())
               {
-                const double r    = cell->center().distance(v.point.position);
+                const double r    = distances[cell->active_cell_index()];
                 const double half = cell->diameter() / 2;
-                if (r + half > v.r_inf && r - half < v.r_sup)
+                if (r + half > inner && r - half < outer)
                   h = std::max(h, cell->diameter() / std::sqrt(double(dim)));
               }
           h = Utilities::MPI::max(h, this->get_mpi_communicator());
           if (h > 0)
-            crown = std::min(crown, (v.r_sup - v.r_inf) / h);
+            crown = std::min(crown, (outer - inner) / h);
         }
       return {ratio, crown};
     }
@@ -164,47 +215,58 @@ namespace xcrack
     KTolerance<dim>::mark(
       parallel::distributed::Triangulation<dim> &triangulation) const
     {
-      const KErrorCells &estimate = this->get_k_error_cells();
-      // No estimate on this mesh (a resumed run, before its first solve),
-      // or no front to estimate for.
-      if (estimate.indicators.size() != triangulation.n_active_cells() ||
-          this->get_front_values().empty())
+      if (this->get_front_values().empty())
         return;
-      // Once the goal is met (the first marking of the next step), only
-      // coarsen where the error no longer sits; with the estimate below
-      // the tolerance but a crown too coarse to trust it, refine only the
-      // crowns.
-      const auto [ratio, crown] = distance_to_goal();
-      const bool met            = (ratio <= tolerance && crown >= crown_cells);
-      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_fraction(
-        triangulation,
-        estimate.indicators,
-        ratio <= tolerance ? 0. : refine_fraction,
-        coarsen_fraction,
-        VectorTools::L1_norm);
+      // The estimate's shares, if it ran on this mesh (not after a first
+      // refinement, nor before the first solve of a resumed run): refine
+      // the cells holding Refine fraction of the error, unless the
+      // estimate is below the tolerance already (and only a crown is too
+      // coarse to trust it), and coarsen those holding Coarsen fraction.
+      const KErrorCells &estimate = this->get_k_error_cells();
+      if (estimate.indicators.size() == triangulation.n_active_cells())
+        {
+          const double ratio = distance_to_goal().first;
+          parallel::distributed::GridRefinement::
+            refine_and_coarsen_fixed_fraction(triangulation,
+                                              estimate.indicators,
+                                              ratio <= tolerance ?
+                                                0. :
+                                                refine_fraction,
+                                              coarsen_fraction,
+                                              VectorTools::L1_norm);
+        }
 
-      // The cells of both crowns: at most its width / Crown cells across,
-      // and no coarsening that makes a parent (twice the size, its centre
-      // up to half a diameter away) meet a crown coarser than that.
+      // The cells of the crowns around the fronts the fields draw now (in
+      // a growth run, the moved ones): at most a crown's width / Crown
+      // cells across, and no coarsening that makes a parent (twice the
+      // size, its centre up to half a diameter away) meet a crown coarser
+      // than that.
+      const std::vector<double> distances = front_distances();
       for (const auto &cell : triangulation.active_cell_iterators())
         if (cell->is_locally_owned())
-          for (const FrontValues<dim> &v : this->get_front_values())
-            for (const auto &[inner, outer] :
-                 {std::make_pair(estimate.crown_inner, estimate.crown_outer),
-                  std::make_pair(v.r_inf, v.r_sup)})
-              {
-                const double r = cell->center().distance(v.point.position);
-                const double diameter = cell->diameter();
-                const auto   meets    = [&](const double half) {
-                  return r + half > inner && r - half < outer;
-                };
-                const double h     = diameter / std::sqrt(double(dim));
-                const double h_max = (outer - inner) / crown_cells;
-                if (2 * h > h_max && meets(1.5 * diameter))
-                  cell->clear_coarsen_flag();
-                if (h > h_max && !met && meets(diameter / 2))
-                  cell->set_refine_flag();
-              }
+          for (const auto &[inner, outer] : crowns())
+            {
+              const double r        = distances[cell->active_cell_index()];
+              const double diameter = cell->diameter();
+              const auto   meets    = [&](const double half) {
+                return r + half > inner && r - half < outer;
+              };
+              const double h     = diameter / std::sqrt(double(dim));
+              const double h_max = (outer - inner) / crown_cells;
+              if (2 * h > h_max && meets(1.5 * diameter))
+                cell->clear_coarsen_flag();
+              if (h > h_max && meets(diameter / 2))
+                cell->set_refine_flag();
+            }
+    }
+
+
+
+    template <int dim>
+    bool
+    KTolerance<dim>::follows_fronts() const
+    {
+      return true;
     }
 
     XCRACK_REGISTER_PLUGIN(Interface,

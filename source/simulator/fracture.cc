@@ -253,22 +253,18 @@ namespace xcrack
 
 
   template <int dim>
-  void
-  Simulator<dim>::estimate_k_errors(
-    const std::vector<std::vector<FrontPoint<dim>>>     &fronts,
-    const typename InteractionIntegral<dim>::FEValuesOf &fe_values_of,
-    const typename InteractionIntegral<dim>::LipsOf     &lips_of)
+  std::pair<double, double>
+  Simulator<dim>::wide_crown(const std::vector<Point<dim>> &tips) const
   {
-    // The wide crown: from r_inf to r_sup = 0.9 d, d the distance from the
-    // tips to the boundary and to each other, r_inf = 0.1 d but at least
-    // two cells of the tip.
+    // From r_inf to r_sup = 0.9 d, d the distance from the tips to the
+    // boundary and to each other, r_inf = 0.1 d but at least two cells of
+    // the tip.
     double clear = std::numeric_limits<double>::max();
     double h     = std::numeric_limits<double>::max();
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-        for (const auto &front : fronts)
+        for (const Point<dim> &tip : tips)
           {
-            const Point<dim> &tip = front[0].position;
             if (cell->point_inside(tip))
               h = std::min(h, cell->diameter() / std::sqrt(double(dim)));
             for (const unsigned int face : cell->face_indices())
@@ -277,21 +273,35 @@ namespace xcrack
                   clear =
                     std::min(clear, tip.distance(cell->face(face)->vertex(v)));
           }
-    for (unsigned int f = 0; f < fronts.size(); ++f)
+    for (unsigned int f = 0; f < tips.size(); ++f)
       for (unsigned int g = 0; g < f; ++g)
-        clear = std::min(clear,
-                         fronts[f][0].position.distance(fronts[g][0].position));
-    clear                   = Utilities::MPI::min(clear, mpi_communicator);
-    h                       = Utilities::MPI::min(h, mpi_communicator);
-    FractureParameters wide = fracture_parameters;
-    wide.crown_in_cells     = false;
-    wide.crown_outer        = 0.9 * clear;
+        clear = std::min(clear, tips[f].distance(tips[g]));
+    clear              = Utilities::MPI::min(clear, mpi_communicator);
+    h                  = Utilities::MPI::min(h, mpi_communicator);
+    const double outer = 0.9 * clear;
     // (On a mesh too coarse for it the crown shrinks to half its width;
     // the run then says the estimate is unreliable.)
-    wide.crown_inner =
-      std::min(std::max(0.1 * clear, 2 * h), 0.5 * wide.crown_outer);
+    return {std::min(std::max(0.1 * clear, 2 * h), 0.5 * outer), outer};
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::estimate_k_errors(
+    const std::vector<std::vector<FrontPoint<dim>>>     &fronts,
+    const typename InteractionIntegral<dim>::FEValuesOf &fe_values_of,
+    const typename InteractionIntegral<dim>::LipsOf     &lips_of)
+  {
+    std::vector<Point<dim>> tips;
+    for (const auto &front : fronts)
+      tips.push_back(front[0].position);
+    FractureParameters wide                      = fracture_parameters;
+    wide.crown_in_cells                          = false;
+    std::tie(wide.crown_inner, wide.crown_outer) = wide_crown(tips);
+
     // Its width in its coarsest cells (on a graded mesh, not the tip's).
-    double h_crown = h;
+    double h_crown = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const auto &front : fronts)
@@ -305,7 +315,8 @@ namespace xcrack
     h_crown                   = Utilities::MPI::max(h_crown, mpi_communicator);
     k_error_cells.crown_inner = wide.crown_inner;
     k_error_cells.crown_outer = wide.crown_outer;
-    k_error_cells.crown_cells = (wide.crown_outer - wide.crown_inner) / h_crown;
+    k_error_cells.crown_cells =
+      (h_crown > 0 ? (wide.crown_outer - wide.crown_inner) / h_crown : 0.);
 
     // K on the wide crown and its derivatives, condensed by the
     // homogeneous constraints (the dual problems' test space).

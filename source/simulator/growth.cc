@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <tuple>
 
 namespace xcrack
 {
@@ -140,6 +141,16 @@ namespace xcrack
       propagation.update_level_sets(front_moves, level_sets);
       cracks_moved = true;
     }
+    // The estimate's wide crown around the moved tips, for a strategy that
+    // refines it before the next solve (k tolerance).
+    if (fracture_parameters.error_estimate && dim == 2)
+      {
+        std::vector<Point<dim>> tips;
+        for (const FrontMove<dim> &move : front_moves)
+          tips.push_back(move.new_position());
+        std::tie(k_error_cells.crown_inner, k_error_cells.crown_outer) =
+          wide_crown(tips);
+      }
     {
       TimerOutput::Scope t(*timer, "refine");
       adapt_mesh_to_fronts();

@@ -93,14 +93,6 @@ namespace xcrack
   void
   Simulator<dim>::adapt_mesh_to_fronts()
   {
-    // A strategy with a goal marks once, from what the last solve left
-    // (k tolerance: coarsening where the error no longer sits); it refines
-    // within the next step, after that step's first solve.
-    if (mesh_refinement->has_goal())
-      {
-        refine_mesh();
-        return;
-      }
     // A strategy that does not follow the fronts (global, kelly, region)
     // leaves the mesh as it is once the cracks grow.
     if (!mesh_refinement->follows_fronts())

@@ -40,7 +40,8 @@ namespace xcrack
        * Whether the strategy marks relative to the cracks' fronts and
        * reaches a fixed point when repeated: after the cracks move, the
        * Simulator then repeats it until the mesh no longer changes. Other
-       * strategies refine once per step.
+       * strategies leave the mesh of a growth step as the step before left
+       * it (unless they have a goal, see has_goal()).
        */
       virtual bool
       follows_fronts() const

@@ -5,6 +5,7 @@
 #include <xcrack/simulator_access.h>
 
 #include <utility>
+#include <vector>
 
 namespace xcrack
 {
@@ -25,9 +26,9 @@ namespace xcrack
      * that hold `Refine fraction` of the summed shares are refined, those
      * holding `Coarsen fraction` with the smallest shares coarsened (no
      * refinement by the shares once the estimate is below the tolerance
-     * and only a crown is too coarse to trust it). Once the goal is met,
-     * the next step starts by coarsening only (the cells the error has
-     * left behind, as the crack grows).
+     * and only a crown is too coarse to trust it). After a growth step the
+     * mesh is coarsened so by the last estimate and the crowns around the
+     * moved fronts are refined, before the step's first solve.
      *
      * Both K's are only as good as the mesh resolves their crowns: the
      * estimate's effectivity was measured 0.1-0.6 with its crown 2-12
@@ -65,7 +66,23 @@ namespace xcrack
       typename Interface<dim>::GoalStatus
       check_goal() const override;
 
+      /// Its crowns move with the fronts: after a growth step the
+      /// Simulator repeats mark() until the crowns around the moved fronts
+      /// are fine enough (the first pass also coarsens by the estimate).
+      bool
+      follows_fronts() const override;
+
     private:
+      /// Per active cell (locally owned ones): the distance of its centre
+      /// to the nearest front, hypot(lsn, lst) of the cracks' fields.
+      std::vector<double>
+      front_distances() const;
+
+      /// (inner, outer) radii of the crowns: the K's, and the estimate's
+      /// wide one once an estimate ran.
+      std::vector<std::pair<double, double>>
+      crowns() const;
+
       /// The largest estimated K error relative to the largest |K|, and
       /// the width of the narrowest crown in its coarsest cells.
       std::pair<double, double>
