@@ -238,6 +238,11 @@ namespace xcrack
     void
     compute_fracture_parameters(const bool report = true);
 
+    /// (r_inf, r_sup) of the estimate's wide crown around @p tips: as wide
+    /// as the boundary and the other tips allow (fracture.cc).
+    std::pair<double, double>
+    wide_crown(const std::vector<Point<dim>> &tips) const;
+
     /**
      * The estimates of the error of the K's in front_values: K on a wide
      * crown (as wide as the boundary and the other tips allow, for a dual
@@ -245,11 +250,6 @@ namespace xcrack
      * (KErrorEstimator, a dual solve per K), and the difference of the two
      * K's.
      */
-    /// (r_inf, r_sup) of the estimate's wide crown around @p tips: as wide
-    /// as the boundary and the other tips allow (fracture.cc).
-    std::pair<double, double>
-    wide_crown(const std::vector<Point<dim>> &tips) const;
-
     void
     estimate_k_errors(
       const std::vector<std::vector<FrontPoint<dim>>>     &fronts,

@@ -51,7 +51,7 @@ namespace xcrack
     /// ran on the current mesh.
     Vector<float> indicators;
     /// The wide crown the estimate is applied to: these radii around
-    /// every tip.
+    /// every tip (after a growth step, around the moved tips).
     double crown_inner = 0, crown_outer = 0;
     /// Its width in its coarsest cells (under 4 the estimate is not to be
     /// trusted at all).

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <tuple>
 
 namespace xcrack
 {
@@ -300,7 +301,8 @@ namespace xcrack
     wide.crown_in_cells                          = false;
     std::tie(wide.crown_inner, wide.crown_outer) = wide_crown(tips);
 
-    // Its width in its coarsest cells (on a graded mesh, not the tip's).
+    // The wide crown's width in its coarsest cells (on a graded mesh, not
+    // the tip's).
     double h_crown = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
