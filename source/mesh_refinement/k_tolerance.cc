@@ -44,8 +44,9 @@ namespace xcrack
           "The goal is trusted once each crown (the K's and the wider one "
           "of the estimate's dual problems) spans this many of its coarsest "
           "cells; coarser cells there are refined too. More costs cells "
-          "away from the tip and makes the estimate more accurate (16: two "
-          "to three times the cells; doc/verification.md).");
+          "away from the tip and makes the estimate more accurate (16: 1.2 "
+          "to 3.5 times the cells on the 2D benchmarks; "
+          "doc/verification.md).");
       }
       prm.leave_subsection();
     }
