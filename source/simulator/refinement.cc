@@ -93,8 +93,8 @@ namespace xcrack
   void
   Simulator<dim>::adapt_mesh_to_fronts()
   {
-    // A strategy that does not follow the fronts (global, kelly, region)
-    // leaves the mesh as it is once the cracks grow.
+    // A strategy that does not follow the fronts (global, kelly, residual,
+    // region) leaves the mesh as it is once the cracks grow.
     if (!mesh_refinement->follows_fronts())
       return;
     // One level per pass, until the marking reaches a fixed point.

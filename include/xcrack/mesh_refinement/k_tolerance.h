@@ -26,9 +26,9 @@ namespace xcrack
      * that hold `Refine fraction` of the summed shares are refined, those
      * holding `Coarsen fraction` with the smallest shares coarsened (no
      * refinement by the shares once the estimate is below the tolerance
-     * and only a crown is too coarse to trust it). After a growth step the
-     * mesh is coarsened so by the last estimate and the crowns around the
-     * moved fronts are refined, before the step's first solve.
+     * and only a crown is too coarse to trust it). After a growth step,
+     * before the step's first solve, the mesh is coarsened by the last
+     * estimate's shares and the crowns around the moved fronts are refined.
      *
      * Both K's are only as good as the mesh resolves their crowns: the
      * estimate's effectivity was measured 0.1-0.6 with its crown 2-12
@@ -41,10 +41,9 @@ namespace xcrack
      *
      * The goal: max over tips and modes |K_exact - K|_estimated <=
      * Tolerance * max over tips sqrt(K_I^2 + K_II^2), with both crowns
-     * `Crown cells` wide. Relative to
-     * the largest K rather than to each tip's own, so that a tip whose K
-     * vanishes (a closed or shielded one) does not ask for endless
-     * refinement.
+     * `Crown cells` wide. Relative to the largest K rather than to each
+     * tip's own, so that a tip whose K vanishes (a closed or shielded one)
+     * does not ask for endless refinement.
      */
     template <int dim>
     class KTolerance : public Interface<dim>, public SimulatorAccess<dim>
