@@ -149,6 +149,37 @@ namespace xcrack
 
 
   template <int dim>
+  std::vector<double>
+  LevelSetFields<dim>::cell_front_distances() const
+  {
+    std::vector<std::vector<double>> n_values, t_values;
+    for (unsigned int c = 0; c < n_cracks(); ++c)
+      {
+        n_values.push_back(vertex_values(c, true));
+        t_values.push_back(vertex_values(c, false));
+      }
+    const auto         &triangulation = dof_handler.get_triangulation();
+    std::vector<double> distances(triangulation.n_active_cells(),
+                                  std::numeric_limits<double>::max());
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (unsigned int c = 0; c < n_cracks(); ++c)
+          {
+            double n = 0, t = 0;
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                n += n_values[c][cell->vertex_index(v)] / cell->n_vertices();
+                t += t_values[c][cell->vertex_index(v)] / cell->n_vertices();
+              }
+            double &d = distances[cell->active_cell_index()];
+            d         = std::min(d, std::hypot(n, t));
+          }
+    return distances;
+  }
+
+
+
+  template <int dim>
   void
   LevelSetFields<dim>::set(const unsigned int                   crack,
                            const TrilinosWrappers::MPI::Vector &new_lsn,

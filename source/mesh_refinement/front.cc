@@ -55,29 +55,13 @@ namespace xcrack
     Front<dim>::mark(
       parallel::distributed::Triangulation<dim> &triangulation) const
     {
-      // r = sqrt(lsn^2 + lst^2) at the centre: the cells' interpolants of
-      // the cracks' fields there are the means of the vertex values.
-      const LevelSetFields<dim>       &fields = this->get_level_set_fields();
-      std::vector<std::vector<double>> lsn, lst;
-      for (unsigned int c = 0; c < fields.n_cracks(); ++c)
-        {
-          lsn.push_back(fields.vertex_values(c, true));
-          lst.push_back(fields.vertex_values(c, false));
-        }
+      // r = sqrt(lsn^2 + lst^2) at the centre.
+      const std::vector<double> distances =
+        this->get_level_set_fields().cell_front_distances();
       for (const auto &cell : triangulation.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            double distance = std::numeric_limits<double>::max();
-            for (unsigned int c = 0; c < fields.n_cracks(); ++c)
-              {
-                double n = 0, t = 0;
-                for (const unsigned int v : cell->vertex_indices())
-                  {
-                    n += lsn[c][cell->vertex_index(v)] / cell->n_vertices();
-                    t += lst[c][cell->vertex_index(v)] / cell->n_vertices();
-                  }
-                distance = std::min(distance, std::hypot(n, t));
-              }
+            const double distance = distances[cell->active_cell_index()];
             if (distance < band * cell->diameter())
               cell->set_refine_flag();
             else if (coarsening_band > 0 &&

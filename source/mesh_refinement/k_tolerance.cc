@@ -102,38 +102,6 @@ namespace xcrack
 
 
     template <int dim>
-    std::vector<double>
-    KTolerance<dim>::front_distances() const
-    {
-      const auto                &triangulation = this->get_triangulation();
-      const LevelSetFields<dim> &fields        = this->get_level_set_fields();
-      std::vector<std::vector<double>> lsn, lst;
-      for (unsigned int c = 0; c < fields.n_cracks(); ++c)
-        {
-          lsn.push_back(fields.vertex_values(c, true));
-          lst.push_back(fields.vertex_values(c, false));
-        }
-      std::vector<double> distances(triangulation.n_active_cells(),
-                                    std::numeric_limits<double>::max());
-      for (const auto &cell : triangulation.active_cell_iterators())
-        if (cell->is_locally_owned())
-          for (unsigned int c = 0; c < fields.n_cracks(); ++c)
-            {
-              double n = 0, t = 0;
-              for (const unsigned int v : cell->vertex_indices())
-                {
-                  n += lsn[c][cell->vertex_index(v)] / cell->n_vertices();
-                  t += lst[c][cell->vertex_index(v)] / cell->n_vertices();
-                }
-              double &d = distances[cell->active_cell_index()];
-              d         = std::min(d, std::hypot(n, t));
-            }
-      return distances;
-    }
-
-
-
-    template <int dim>
     std::vector<std::pair<double, double>>
     KTolerance<dim>::crowns() const
     {
@@ -165,8 +133,9 @@ namespace xcrack
         (k_max > 0 ? error_max / k_max : std::numeric_limits<double>::max());
       // Each crown's width in its coarsest cells (the distances those of
       // mark(), so that what this measures, mark() refines).
-      const std::vector<double> distances = front_distances();
-      double                    crown     = std::numeric_limits<double>::max();
+      const std::vector<double> distances =
+        this->get_level_set_fields().cell_front_distances();
+      double crown = std::numeric_limits<double>::max();
       for (const auto &[inner, outer] : crowns())
         {
           double h = 0;
@@ -242,7 +211,8 @@ namespace xcrack
       // cells across, and no coarsening that makes a parent (twice the
       // size, its centre up to half a diameter away) meet a crown coarser
       // than that.
-      const std::vector<double> distances = front_distances();
+      const std::vector<double> distances =
+        this->get_level_set_fields().cell_front_distances();
       for (const auto &cell : triangulation.active_cell_iterators())
         if (cell->is_locally_owned())
           for (const auto &[inner, outer] : crowns())

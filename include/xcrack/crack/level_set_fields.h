@@ -74,6 +74,16 @@ namespace xcrack
     vertex_values(const unsigned int crack, const bool normal) const;
 
     /**
+     * Per active cell (by active cell index; set on the locally owned
+     * cells, the largest double elsewhere): the distance of its centre to
+     * the nearest front, read as hypot(lsn, lst) of the nearest crack's
+     * interpolants there (the means of the vertex values). What the
+     * refinement strategies that follow the fronts measure.
+     */
+    std::vector<double>
+    cell_front_distances() const;
+
+    /**
      * Replace the fields of crack @p crack (vectors of the layout of
      * get_dof_handler(), owned entries read; the ghosts are updated here).
      */

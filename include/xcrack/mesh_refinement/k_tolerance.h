@@ -72,11 +72,6 @@ namespace xcrack
       follows_fronts() const override;
 
     private:
-      /// Per active cell (locally owned ones): the distance of its centre
-      /// to the nearest front, hypot(lsn, lst) of the cracks' fields.
-      std::vector<double>
-      front_distances() const;
-
       /// (inner, outer) radii of the crowns: the K's, and the estimate's
       /// wide one once an estimate ran.
       std::vector<std::pair<double, double>>
