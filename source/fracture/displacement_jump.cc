@@ -16,6 +16,7 @@ namespace xcrack
   template <int dim>
   std::array<double, 3>
   displacement_jump_k(const DoFHandler<dim>               &dof_handler,
+                      const GridTools::Cache<dim>         &cache,
                       const TrilinosWrappers::MPI::Vector &solution,
                       const FrontPoint<dim>               &tip,
                       const Material                      &material,
@@ -31,7 +32,6 @@ namespace xcrack
                               material.mu() / (material.kappa(dim) + 1) *
                                 std::sqrt(2 * numbers::PI),
                               material.mu() / 4 * std::sqrt(2 * numbers::PI)};
-    const GridTools::Cache<dim> cache(dof_handler.get_triangulation(), mapping);
     typename Triangulation<dim>::active_cell_iterator hint;
     // The discrete crack may lie off the analytic line by the fit to
     // vertices (up to 1 % of an edge, the crown starting about two cells
@@ -134,6 +134,7 @@ namespace xcrack
 
   template std::array<double, 3>
   displacement_jump_k<2>(const DoFHandler<2> &,
+                         const GridTools::Cache<2> &,
                          const TrilinosWrappers::MPI::Vector &,
                          const FrontPoint<2> &,
                          const Material &,
@@ -142,6 +143,7 @@ namespace xcrack
                          const unsigned int);
   template std::array<double, 3>
   displacement_jump_k<3>(const DoFHandler<3> &,
+                         const GridTools::Cache<3> &,
                          const TrilinosWrappers::MPI::Vector &,
                          const FrontPoint<3> &,
                          const Material &,

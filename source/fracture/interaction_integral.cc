@@ -172,12 +172,17 @@ namespace xcrack
                    lambda = mu * (3 - unit.kappa) / (unit.kappa - 1);
       for (unsigned int m = 0; m < n_modes; ++m)
         divergence[m] = Tensor<1, dim>();
+      // The shifted points' feet lie on the segments nearest to x (their
+      // distances change by delta at most): the same feet as from
+      // first..last, found on fewer segments.
+      const auto [near_first, near_last] =
+        curve.near_segments(x, 4 * delta, first, last);
       for (unsigned int j = 0; j < dim; ++j)
         for (const double sign : {1., -1.})
           {
             Point<dim> y = x;
             y[j] += sign * delta;
-            const auto           projection = curve.project(y, first, last);
+            const auto projection   = curve.project(y, near_first, near_last);
             const Tensor<1, dim> yl = projection.R * (y - projection.foot);
             double               a  = std::atan2(yl[1], yl[0]);
             if (a - angle > numbers::PI)

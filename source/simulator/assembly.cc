@@ -45,11 +45,13 @@ namespace xcrack
     const double lambda = material.lambda(dim);
     const double mu     = material.mu();
 
-    hp::FEValues<dim>     hp_fe_values(fe_collection,
-                                   quadrature_collection,
-                                   update_values | update_gradients |
-                                     update_quadrature_points |
-                                     update_JxW_values);
+    // Shape values only for a body force: the stiffness reads gradients,
+    // and FE_Enriched's tables for a tip rule of 750 points are large.
+    hp::FEValues<dim> hp_fe_values(
+      fe_collection,
+      quadrature_collection,
+      (boundary_conditions.body_force ? update_values : update_default) |
+        update_gradients | update_quadrature_points | update_JxW_values);
     hp::FEFaceValues<dim> hp_fe_face_values(fe_collection,
                                             face_quadrature_collection,
                                             update_values |

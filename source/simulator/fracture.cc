@@ -1,3 +1,4 @@
+#include <deal.II/fe/mapping_q1.h>
 #include <deal.II/hp/fe_values.h>
 
 #include <xcrack/fracture/displacement_jump.h>
@@ -28,10 +29,11 @@ namespace xcrack
     if (fronts.empty())
       return;
 
+    // No shape values: the integrals and the estimate read gradients only
+    // (FE_Enriched's tables for a tip rule of 750 points are large).
     hp::FEValues<dim>              hp_fe_values(fe_collection,
                                    quadrature_collection,
-                                   update_values | update_gradients |
-                                     update_quadrature_points |
+                                   update_gradients | update_quadrature_points |
                                      update_JxW_values |
                                      update_inverse_jacobians);
     std::unique_ptr<FEValues<dim>> special_values;
@@ -62,9 +64,11 @@ namespace xcrack
       estimate_k_errors(fronts, fe_values_of, lips_of);
 
     // The cross-check by the displacement jumps over the crown.
+    const MappingQ1<dim>        mapping;
+    const GridTools::Cache<dim> cache(triangulation, mapping);
     for (auto &v : front_values)
       v.k_jump = displacement_jump_k(
-        dof_handler, solution, v.point, material, v.r_inf, v.r_sup);
+        dof_handler, cache, solution, v.point, material, v.r_inf, v.r_sup);
     const auto &values = front_values;
     // In a growth run the screen shows one line per step; the values are
     // in front_<step>.csv.

@@ -2,6 +2,7 @@
 #define xcrack_fracture_displacement_jump_h
 
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/grid/grid_tools_cache.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <xcrack/crack/crack_geometry.h>
@@ -35,11 +36,14 @@ namespace xcrack
    * passed near a vertex, and the fit returned K of the wrong sign). The
    * difference across the lip grows linearly with the offset (the strain
    * along e2); 2 d(delta) - d(2 delta) removes that term.
-   * Collective; every rank gets the result.
+   * Collective; every rank gets the result. @p cache finds the sampled
+   * points' cells: one per mesh, shared by all front points (its vertex to
+   * cell map takes longer to build than the samples of one point take).
    */
   template <int dim>
   std::array<double, 3>
   displacement_jump_k(const DoFHandler<dim>               &dof_handler,
+                      const GridTools::Cache<dim>         &cache,
                       const TrilinosWrappers::MPI::Vector &solution,
                       const FrontPoint<dim>               &tip,
                       const Material                      &material,

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace xcrack
@@ -93,7 +94,7 @@ namespace xcrack
       result.s      = a.s + best_t * (b.s - a.s);
       result.at_end = !closed && ((best_i == 0 && best_t == 0) ||
                                   (best_i + 2 == points.size() && best_t == 1));
-      result.R      = frame_at(result.s);
+      result.R      = frame_at(result.s, best_i);
       if (dim == 3 && step > 0)
         {
           double s_minus = result.s - step, s_plus = result.s + step;
@@ -102,10 +103,39 @@ namespace xcrack
               s_minus = std::max(s_minus, 0.);
               s_plus  = std::min(s_plus, length);
             }
-          result.dR =
-            (frame_at(s_plus) - frame_at(s_minus)) / (s_plus - s_minus);
+          result.dR = (frame_at(s_plus, best_i) - frame_at(s_minus, best_i)) /
+                      (s_plus - s_minus);
         }
       return result;
+    }
+
+    /**
+     * The smallest range of segments, within @p first to @p last - 1, that
+     * holds every segment whose distance to @p x exceeds the nearest one's
+     * by at most @p slack: the segments that can be nearest to any point
+     * within slack / 2 of x (project() on that range finds the same foot
+     * as on the whole one, ties included).
+     */
+    std::pair<unsigned int, unsigned int>
+    near_segments(const Point<dim>  &x,
+                  const double       slack,
+                  const unsigned int first = 0,
+                  unsigned int       last = numbers::invalid_unsigned_int) const
+    {
+      if (points.size() == 1)
+        return {0, 1};
+      last        = std::min<unsigned int>(last, points.size() - 1);
+      double best = std::numeric_limits<double>::max();
+      for (unsigned int i = first; i < last; ++i)
+        best = std::min(best, segment_distance(i, x));
+      unsigned int low = last, high = first;
+      for (unsigned int i = first; i < last; ++i)
+        if (segment_distance(i, x) <= best + slack)
+          {
+            low  = std::min(low, i);
+            high = std::max(high, i + 1);
+          }
+      return {low, high};
     }
 
     /// Distance of the segments @p i to @p x.
@@ -147,10 +177,26 @@ namespace xcrack
     const double                        length;
 
   private:
-    /// The segment holding abscissa @p s (in [0, length]).
+    /**
+     * The segment holding abscissa @p s (in [0, length]): the last point
+     * at or before s, clamped to the segments. With @p hint (a segment
+     * near s) a walk from there, which the frames at and around a
+     * projection's foot take (a few segments away at most), else a
+     * binary search; both give the same segment.
+     */
     unsigned int
-    segment_of(const double s) const
+    segment_of(const double       s,
+               const unsigned int hint = numbers::invalid_unsigned_int) const
     {
+      if (hint < points.size() - 1)
+        {
+          unsigned int i = hint;
+          while (i + 2 < points.size() && !(s < points[i + 1].s))
+            ++i;
+          while (i > 0 && s < points[i].s)
+            --i;
+          return i;
+        }
       const auto it =
         std::upper_bound(points.begin(),
                          points.end(),
@@ -166,12 +212,13 @@ namespace xcrack
     /// The point of the polyline at abscissa @p s (wrapped on a closed
     /// front, clamped to the ends of an open one).
     Point<dim>
-    position_at(double s) const
+    position_at(double             s,
+                const unsigned int hint = numbers::invalid_unsigned_int) const
     {
       if (closed)
         s -= length * std::floor(s / length);
       s                        = std::clamp(s, 0., length);
-      const unsigned int     i = segment_of(s);
+      const unsigned int     i = segment_of(s, hint);
       const FrontPoint<dim> &a = points[i];
       const FrontPoint<dim> &b = points[i + 1];
       const double           t = std::clamp((s - a.s) / (b.s - a.s), 0., 1.);
@@ -187,14 +234,15 @@ namespace xcrack
      * tangent whose derivative along s is the curvature, not noise).
      */
     Tensor<2, dim>
-    frame_at(double s) const
+    frame_at(double             s,
+             const unsigned int hint = numbers::invalid_unsigned_int) const
     {
       Tensor<1, dim> e1 = points[0].e1, e2 = points[0].e2;
       if (points.size() > 1)
         {
           if (closed)
             s -= length * std::floor(s / length);
-          const unsigned int     i = segment_of(s);
+          const unsigned int     i = segment_of(s, hint);
           const FrontPoint<dim> &a = points[i];
           const FrontPoint<dim> &b = points[i + 1];
           const double t = std::clamp((s - a.s) / (b.s - a.s), 0., 1.);
@@ -203,7 +251,8 @@ namespace xcrack
           if constexpr (dim == 3)
             {
               const double   half = std::max(step, 1e-3 * length);
-              Tensor<1, dim> e3 = position_at(s + half) - position_at(s - half);
+              Tensor<1, dim> e3 =
+                position_at(s + half, i) - position_at(s - half, i);
               e3 -= (e3 * e2) * e2;
               e3 /= e3.norm();
               e1 = cross_product_3d(e2, e3);
