@@ -2,7 +2,6 @@
 #include <deal.II/base/quadrature.h>
 
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/grid_tools_cache.h>
 
@@ -25,7 +24,6 @@ namespace xcrack
                       const unsigned int                   n_samples)
   {
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
-    const MappingQ1<dim> mapping;
     // K = factor [[u]] / sqrt(r) for modes I, II and III.
     const double factor[3] = {material.mu() / (material.kappa(dim) + 1) *
                                 std::sqrt(2 * numbers::PI),
@@ -71,7 +69,7 @@ namespace xcrack
                   found_cell.first->level(),
                   found_cell.first->index(),
                   &dof_handler);
-                FEValues<dim> fe_values(mapping,
+                FEValues<dim> fe_values(cache.get_mapping(),
                                         cell->get_fe(),
                                         Quadrature<dim>(found_cell.second),
                                         update_values);

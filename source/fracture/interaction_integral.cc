@@ -175,14 +175,13 @@ namespace xcrack
       // The shifted points' feet lie on the segments nearest to x (their
       // distances change by delta at most): the same feet as from
       // first..last, found on fewer segments.
-      const auto [near_first, near_last] =
-        curve.near_segments(x, 4 * delta, first, last);
+      const auto near = curve.near_segments(x, 4 * delta, first, last);
       for (unsigned int j = 0; j < dim; ++j)
         for (const double sign : {1., -1.})
           {
             Point<dim> y = x;
             y[j] += sign * delta;
-            const auto projection   = curve.project(y, near_first, near_last);
+            const auto projection   = curve.project(y, near.first, near.last);
             const Tensor<1, dim> yl = projection.R * (y - projection.foot);
             double               a  = std::atan2(yl[1], yl[0]);
             if (a - angle > numbers::PI)
@@ -327,7 +326,6 @@ namespace xcrack
         std::array<std::vector<double>, n_vertices> psi_vertex;
         std::vector<unsigned int>                   active_tests;
         std::vector<Tensor<2, dim>>                 grad_theta(n_test);
-        std::vector<unsigned int>                   near_segments;
         for (const auto &cell : dof_handler.active_cell_iterators())
           {
             if (!cell->is_locally_owned())
@@ -346,18 +344,12 @@ namespace xcrack
             unsigned int first = 0, last = std::max(n_segments, 1u);
             if (n_segments > 1)
               {
-                const Point<dim> c    = cell->center();
-                double           best = distance(c);
-                if (best > r_sup + cell->diameter())
+                const auto near =
+                  curve.near_segments(cell->center(), cell->diameter());
+                if (near.distance > r_sup + cell->diameter())
                   continue;
-                first = n_segments;
-                last  = 0;
-                for (unsigned int i = 0; i < n_segments; ++i)
-                  if (curve.segment_distance(i, c) <= best + cell->diameter())
-                    {
-                      first = std::min(first, i);
-                      last  = std::max(last, i + 1);
-                    }
+                first = near.first;
+                last  = near.last;
               }
 
             // The boundary faces of the cell that hold its vertex v.

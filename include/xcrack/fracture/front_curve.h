@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <utility>
 #include <vector>
 
 namespace xcrack
@@ -109,6 +108,15 @@ namespace xcrack
       return result;
     }
 
+    /// A range of segments, @p first to @p last - 1, and the distance of
+    /// the nearest of them to the point they were chosen for.
+    struct SegmentRange
+    {
+      unsigned int first;
+      unsigned int last;
+      double       distance;
+    };
+
     /**
      * The smallest range of segments, within @p first to @p last - 1, that
      * holds every segment whose distance to @p x exceeds the nearest one's
@@ -116,26 +124,26 @@ namespace xcrack
      * within slack / 2 of x (project() on that range finds the same foot
      * as on the whole one, ties included).
      */
-    std::pair<unsigned int, unsigned int>
+    SegmentRange
     near_segments(const Point<dim>  &x,
                   const double       slack,
                   const unsigned int first = 0,
                   unsigned int       last = numbers::invalid_unsigned_int) const
     {
       if (points.size() == 1)
-        return {0, 1};
+        return {0, 1, x.distance(points[0].position)};
       last        = std::min<unsigned int>(last, points.size() - 1);
       double best = std::numeric_limits<double>::max();
       for (unsigned int i = first; i < last; ++i)
         best = std::min(best, segment_distance(i, x));
-      unsigned int low = last, high = first;
+      SegmentRange range{last, first, best};
       for (unsigned int i = first; i < last; ++i)
         if (segment_distance(i, x) <= best + slack)
           {
-            low  = std::min(low, i);
-            high = std::max(high, i + 1);
+            range.first = std::min(range.first, i);
+            range.last  = std::max(range.last, i + 1);
           }
-      return {low, high};
+      return range;
     }
 
     /// Distance of the segments @p i to @p x.
