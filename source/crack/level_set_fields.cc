@@ -1,4 +1,5 @@
 #include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
 
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/numerics/vector_tools.h>
@@ -197,15 +198,19 @@ namespace xcrack
   LevelSetFields<dim>::subtract_from_lsn(
     const std::vector<std::vector<double>> &shift)
   {
+    const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
     for (unsigned int c = 0; c < shift.size() && c < normal.size(); ++c)
       {
-        if (shift[c].empty())
+        // Collective: a rank that fitted no vertex (an empty shift) takes
+        // part in the others' vector operations (it skipped them, and the
+        // ranks' collectives mismatched: a 2D trial step on two ranks).
+        if (!Utilities::MPI::logical_or(!shift[c].empty(), comm))
           continue;
         TrilinosWrappers::MPI::Vector owned;
         reinit_vector(owned, false);
         owned = normal[c];
         for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
+          if (cell->is_locally_owned() && !shift[c].empty())
             for (const unsigned int v : cell->vertex_indices())
               {
                 // Set, not subtract: a vertex is met by every cell around

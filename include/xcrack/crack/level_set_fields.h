@@ -96,7 +96,7 @@ namespace xcrack
      * Lower lsn of each crack c by @p shift[c][v] at vertex v (by vertex
      * index; an empty vector leaves the crack alone): fit to vertex moves
      * the crack through the vertices the enrichment chose, and the fields
-     * keep the crack the solution sees.
+     * keep the crack the solution sees. Collective.
      */
     void
     subtract_from_lsn(const std::vector<std::vector<double>> &shift);
