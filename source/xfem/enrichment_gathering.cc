@@ -20,13 +20,13 @@ namespace xcrack
 {
   template <int dim>
   Tensor<2, dim>
-  Enrichment<dim>::vertex_frame(const Triangulation<dim> &tria,
-                                const unsigned int        c,
-                                const unsigned int        v) const
+  Enrichment<dim>::vertex_frame(
+    const std::set<typename Triangulation<dim>::active_cell_iterator> &cells,
+    const unsigned int                                                 c,
+    const Point<dim>                                                  &x) const
   {
-    Tensor<1, dim>    e1, e2;
-    const Point<dim> &x = tria.get_vertices()[v];
-    for (const auto &cell : GridTools::find_cells_adjacent_to_vertex(tria, v))
+    Tensor<1, dim> e1, e2;
+    for (const auto &cell : cells)
       if (!cell->is_artificial())
         {
           std::array<double, CellLevelSets<dim>::n_vertices> lsn, lst;
@@ -80,6 +80,12 @@ namespace xcrack
     std::map<unsigned int, Node>         nodes; // by vertex index
     std::vector<types::global_dof_index> dofs;
     double                               largest_tip_cell = 0;
+    // The cells around each vertex, for the frames: one pass over the mesh
+    // (a search per vertex made the set-up quadratic in the cells).
+    const std::vector<
+      std::set<typename Triangulation<dim>::active_cell_iterator>>
+      cells_of_vertex =
+        GridTools::vertex_to_cell_map(dof_handler.get_triangulation());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->active_fe_index() >= tip)
         {
@@ -100,9 +106,10 @@ namespace xcrack
                     node.dofs.fill(numbers::invalid_dof_index);
                     node.crack    = crack_index(cell);
                     node.position = cell->vertex(v);
-                    node.frame = vertex_frame(dof_handler.get_triangulation(),
-                                              node.crack,
-                                              cell->vertex_index(v));
+                    node.frame =
+                      vertex_frame(cells_of_vertex[cell->vertex_index(v)],
+                                   node.crack,
+                                   node.position);
                   }
                 const auto &outer = fe.system_to_base_index(i);
                 const auto &inner = fe.base_element(outer.first.first)
@@ -337,11 +344,13 @@ namespace xcrack
   template const IndexSet &
   Enrichment<3>::gathering_masters() const;
   template Tensor<2, 2>
-  Enrichment<2>::vertex_frame(const Triangulation<2> &,
-                              const unsigned int,
-                              const unsigned int) const;
+  Enrichment<2>::vertex_frame(
+    const std::set<Triangulation<2>::active_cell_iterator> &,
+    const unsigned int,
+    const Point<2> &) const;
   template Tensor<2, 3>
-  Enrichment<3>::vertex_frame(const Triangulation<3> &,
-                              const unsigned int,
-                              const unsigned int) const;
+  Enrichment<3>::vertex_frame(
+    const std::set<Triangulation<3>::active_cell_iterator> &,
+    const unsigned int,
+    const Point<3> &) const;
 } // namespace xcrack

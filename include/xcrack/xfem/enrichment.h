@@ -18,6 +18,7 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <set>
 #include <vector>
 
 namespace xcrack
@@ -376,16 +377,18 @@ namespace xcrack
                const unsigned int                                c) const;
 
     /**
-     * The frame (rows e1, e2[, e3]) of crack @p c's level sets at vertex
-     * @p v: e1 along grad lst, e2 along grad lsn made normal to e1, the
-     * gradients averaged over the owned and ghost cells around the vertex.
-     * Smooth along the front and across the tip zone, which is what DOF
-     * gathering needs of it.
+     * The frame (rows e1, e2[, e3]) of crack @p c's level sets at the vertex
+     * @p x: e1 along grad lst, e2 along grad lsn made normal to e1, the
+     * gradients averaged over the owned and ghost cells of @p cells, the
+     * cells around the vertex (GridTools::vertex_to_cell_map(): with the
+     * coarser cells a hanging vertex lies on). Smooth along the front and
+     * across the tip zone, which is what DOF gathering needs of it.
      */
     Tensor<2, dim>
-    vertex_frame(const Triangulation<dim> &tria,
-                 const unsigned int        c,
-                 const unsigned int        v) const;
+    vertex_frame(
+      const std::set<typename Triangulation<dim>::active_cell_iterator> &cells,
+      const unsigned int                                                 c,
+      const Point<dim> &x) const;
 
     /// Decide which vertices crack @p c is fitted to (vertex_shift[c]).
     void
