@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/grid_tools_cache.h>
+#include <deal.II/numerics/rtree.h>
 
 #include <xcrack/fracture/displacement_jump.h>
 
@@ -31,6 +32,8 @@ namespace xcrack
                                 std::sqrt(2 * numbers::PI),
                               material.mu() / 4 * std::sqrt(2 * numbers::PI)};
     typename Triangulation<dim>::active_cell_iterator hint;
+    const auto                                       &owned_boxes =
+      cache.get_locally_owned_cell_bounding_boxes_rtree();
     // The discrete crack may lie off the analytic line by the fit to
     // vertices (up to 1 % of an edge, the crown starting about two cells
     // out): read the sides a hundredth of r_min away and twice that.
@@ -47,6 +50,19 @@ namespace xcrack
           r_min +
           (r_max - r_min) * (n_samples == 1 ? 0. : double(k) / (n_samples - 1));
         const Point<dim> on_lip = tip.position - r * tip.e1;
+        // Samples whose four points lie in no owned cell's box are other
+        // ranks' (searching for them here costs a search of the ghost
+        // layer); a rank that owns one of them finds the others among its
+        // owned and ghost cells, also where the lips run along the border
+        // of two ranks' parts.
+        Tensor<1, dim> margin;
+        for (unsigned int d = 0; d < dim; ++d)
+          margin[d] = 2 * side_offset;
+        const BoundingBox<dim> sample(
+          std::make_pair(on_lip - margin, on_lip + margin));
+        if (owned_boxes.qbegin(boost::geometry::index::intersects(sample)) ==
+            owned_boxes.qend())
+          continue;
         // u at +-side_offset and +-2 side_offset off the lip.
         constexpr std::array<double, 4> offsets = {{1., -1., 2., -2.}};
         Tensor<1, dim>                  u[4];
