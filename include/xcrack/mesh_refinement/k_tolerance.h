@@ -86,6 +86,8 @@ namespace xcrack
       double refine_fraction  = 0.5;
       double coarsen_fraction = 0.02;
       double crown_cells      = 8;
+      /// Whether the warning on geometric tip zones was printed.
+      mutable bool warned = false;
     };
   } // namespace MeshRefinement
 } // namespace xcrack
