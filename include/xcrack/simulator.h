@@ -32,6 +32,7 @@
 #include <xcrack/run_record.h>
 #include <xcrack/statistics.h>
 #include <xcrack/termination_criteria/interface.h>
+#include <xcrack/work_balance.h>
 #include <xcrack/xfem/enrichment.h>
 
 #include <chrono>
@@ -108,10 +109,32 @@ namespace xcrack
 
     /// @name Set-up (setup.cc)
     /// @{
+    /**
+     * The cracks' fields, the enrichment, the DoFs, the constraints and
+     * the system on the current mesh. With @p may_split, the mesh may
+     * first be split again among the ranks by the work of its cells
+     * (share_work()); a caller that keeps vectors of the current split
+     * across the call passes false.
+     */
     void
-    setup_system();
+    setup_system(const bool may_split = true);
+    /**
+     * On several ranks, once the enrichment has classified the cells:
+     * split the mesh again by their work if WorkBalance asks for it (and
+     * @p may_split), classify again, and keep the imbalance left for the
+     * statistics.
+     */
+    void
+    share_work(const bool may_split);
     void
     update_level_sets();
+    /**
+     * The work of each locally owned cell in the assembly and the K
+     * extraction, by active cell index: quadrature points times DoFs
+     * (WorkBalance).
+     */
+    std::vector<unsigned int>
+    cell_work() const;
     /// Dirichlet and pinned-point constraints, aware of enriched DoFs.
     void
     make_dirichlet_constraints();
@@ -316,6 +339,7 @@ namespace xcrack
     MeshDescription                mesh_description;
     BoundaryConditions<dim>        boundary_conditions;
     LinearSolver                   linear_solver;
+    WorkBalance<dim>               work_balance;
     unsigned int                   degree = 1;
     std::shared_ptr<Function<dim>> exact_solution;
     CrackSet<dim>                  cracks;
@@ -349,6 +373,9 @@ namespace xcrack
 
     /// The enriched DoFs (owned and ghost) of the current space.
     IndexSet enriched_dofs;
+    /// The largest rank's work over the mean (WorkBalance::imbalance()) of
+    /// the current space; 1 on one rank.
+    double work_imbalance = 1;
 
     /// @name The state of a growth run (checkpointed)
     /// @{

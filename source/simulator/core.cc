@@ -31,6 +31,7 @@ namespace xcrack
     prm.leave_subsection();
 
     EnrichmentParameters::declare_parameters(prm);
+    WorkBalance<dim>::declare_parameters(prm);
     FractureParameters::declare_parameters(prm);
     MeshRefinement::Parameters::declare_parameters(prm);
     Propagation<dim>::declare_parameters(prm);
@@ -63,6 +64,7 @@ namespace xcrack
     material.parse_parameters(prm);
     mesh_description.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
+    work_balance.parse_parameters(prm);
 
     FunctionConstants &constants = function_constants;
     constants                    = material.constants(dim);
@@ -441,6 +443,8 @@ namespace xcrack
     statistics.add_value("enriched_dofs",
                          (unsigned long long)n_free_enriched_dofs());
     statistics.add_value("solver_iterations", (unsigned long long)iterations);
+    if (enrichment && Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
+      statistics.add_value("work_imbalance", work_imbalance);
     if (dof_handler.n_dofs() <= run_parameters.condition_number_limit)
       statistics.add_value("condition_number",
                            condition_number(system_matrix, constraints));

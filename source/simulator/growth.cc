@@ -191,7 +191,9 @@ namespace xcrack
       propagation.update_level_sets(front_moves, level_sets);
       cracks_moved = true;
     }
-    setup_system();
+    // On the same split of the mesh: the fields are restored below as
+    // they are, owned by the same ranks.
+    setup_system(false);
     assemble_system();
     solve();
     // A trial solve reports no error estimate.

@@ -13,7 +13,7 @@ namespace xcrack
 {
   template <int dim>
   void
-  Simulator<dim>::setup_system()
+  Simulator<dim>::setup_system(const bool may_split)
   {
     // The cracks' fields on this mesh, the cells they enrich, and the
     // fields fitted to the vertices the enrichment chose; gathering ties
@@ -25,6 +25,8 @@ namespace xcrack
       if (enrichment)
         {
           enrichment->set_fe_indices(dof_handler, level_sets);
+          if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
+            share_work(may_split);
           level_sets.subtract_from_lsn(enrichment->lsn_shift());
         }
     }
@@ -72,6 +74,53 @@ namespace xcrack
     solution.reinit(locally_owned_dofs,
                     locally_relevant_dofs,
                     mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::share_work(const bool may_split)
+  {
+    std::vector<unsigned int> work = cell_work();
+    if (may_split &&
+        work_balance.balance(
+          triangulation,
+          work,
+          [this]() { level_sets.prepare_for_coarsening_and_refinement(); },
+          [this]() { level_sets.interpolate(); }))
+      {
+        // Indexed by the cells of the previous split.
+        k_error_cells.indicators.reinit(0);
+        dof_handler.reinit(triangulation);
+        enrichment->set_fe_indices(dof_handler, level_sets);
+        work = cell_work();
+      }
+    work_imbalance = WorkBalance<dim>::imbalance(triangulation, work);
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  Simulator<dim>::cell_work() const
+  {
+    // The rules are built here (and cached for the assembly) rather than
+    // guessed from the cells' kinds.
+    std::vector<unsigned int> work(triangulation.n_active_cells(), 0);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          // Before distribute_dofs(): the cell knows its index only.
+          const unsigned int     index = cell->active_fe_index();
+          const Quadrature<dim> *rule =
+            enrichment->special_quadrature(cell, degree + 1);
+          const unsigned int n_points =
+            (rule ? rule->size() : quadrature_collection[index].size());
+          work[cell->active_cell_index()] =
+            n_points * fe_collection[index].n_dofs_per_cell();
+        }
+    return work;
   }
 
 
