@@ -1040,8 +1040,10 @@ namespace xcrack
   IndexSet
   Enrichment<dim>::enriched_dofs(const DoFHandler<dim> &dof_handler) const
   {
-    IndexSet                             result(dof_handler.n_dofs());
-    std::vector<types::global_dof_index> dofs;
+    // Gathered, sorted, then added at once: one IndexSet::add_index() per
+    // DoF in cell order inserts into the middle of its ranges, quadratic in
+    // the enriched DoFs (a sixth of a gathered 230k-DoF run).
+    std::vector<types::global_dof_index> enriched, dofs;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial() && cell->active_fe_index() != plain)
         {
@@ -1049,8 +1051,13 @@ namespace xcrack
           cell->get_dof_indices(dofs);
           for (unsigned int i = 0; i < dofs.size(); ++i)
             if (is_enriched_dof(cell->get_fe(), i))
-              result.add_index(dofs[i]);
+              enriched.push_back(dofs[i]);
         }
+    std::sort(enriched.begin(), enriched.end());
+    enriched.erase(std::unique(enriched.begin(), enriched.end()),
+                   enriched.end());
+    IndexSet result(dof_handler.n_dofs());
+    result.add_indices(enriched.begin(), enriched.end());
     result.compress();
     return result;
   }
