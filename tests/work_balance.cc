@@ -7,9 +7,10 @@
 // DoFs, K, K from the displacement jumps) on every mesh of a front-refined
 // sequence. A trial step of a predictor-corrector growth run keeps the split
 // (its saved fields are restored as they are) and ends where the split by cells
-// does (its moved crack is fitted to a vertex of one rank only, which once made
-// the ranks' collectives mismatch). Run on two ranks; 2D, where the same code
-// runs as in 3D at a fraction of the cost.
+// does (a moved crack fitted to vertices of one rank only once made the ranks'
+// collectives mismatch in that step, on an 8 x 8 version of this plate). Run on
+// two ranks; 2D, where the same code runs as in 3D at a fraction of the
+// cost.
 
 #include <deal.II/base/mpi.h>
 
