@@ -88,10 +88,7 @@ def main():
         for label in labels))
     print()
     for label in labels:
-        r = rows[label][-1]
-        print(f"{label}: K_I error {float(r['K_I_error']):.6e}, K_II error "
-              f"{float(r['K_II_error']):.6e}, K_III error "
-              f"{float(r['K_III_error']):.6e}")
+        print(f"{label}: {xcrack_runs.k_errors(rows[label][-1], 6)}")
 
 
 if __name__ == "__main__":

@@ -85,10 +85,7 @@ def main():
         print(line)
     print()
     for label, _ in builds:
-        r = rows[label][-1]
-        print(f"{label}: K_I error {float(r['K_I_error']):.3e}, K_II error "
-              f"{float(r['K_II_error']):.3e}, K_III error "
-              f"{float(r['K_III_error']):.3e}")
+        print(f"{label}: {xcrack_runs.k_errors(rows[label][-1], 3)}")
 
 
 if __name__ == "__main__":

@@ -34,6 +34,14 @@ def run_xcrack(prm_text, work, ranks=1, binary=None):
         return list(csv.DictReader(f))
 
 
+def k_errors(row, digits=3):
+    """The K errors of a 3D statistics row against its reference, as text:
+    what the timing studies print to show that a faster run solved the same
+    problem."""
+    return ", ".join(f"{mode} error {float(row[mode + '_error']):.{digits}e}"
+                     for mode in ("K_I", "K_II", "K_III"))
+
+
 def front_file(row, n_meshes):
     """The name of the front file of a statistics row: front_<step>.csv, or
     front_<step>.<mesh>.csv for a step solved on n_meshes > 1 meshes."""
