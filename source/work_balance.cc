@@ -71,13 +71,14 @@ namespace xcrack
   WorkBalance<dim>::balance(
     parallel::distributed::Triangulation<dim> &triangulation,
     const std::vector<unsigned int>           &work,
+    const double                               measured,
     const std::function<void()>               &before,
     const std::function<void()>               &after) const
   {
     if (!by_work ||
         Utilities::MPI::n_mpi_processes(triangulation.get_communicator()) ==
           1 ||
-        imbalance(triangulation, work) <= 1 + tolerance)
+        measured <= 1 + tolerance)
       return false;
 
     // Only for this split: a later refinement splits by cells again, and

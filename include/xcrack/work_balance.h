@@ -50,16 +50,18 @@ namespace xcrack
               const std::vector<unsigned int>                 &work);
 
     /**
-     * With `Partition = work` on more than one rank, and if imbalance()
-     * exceeds `Imbalance tolerance`: split @p triangulation again so that
-     * the ranks share @p work evenly. @p before is called before the split
-     * and @p after after it: they carry the data attached to the mesh (the
-     * cracks' fields). Returns whether the mesh was split again; the
-     * caller then rebuilds what depends on the partition. Collective.
+     * With `Partition = work` on more than one rank, and if @p measured
+     * (imbalance() of @p work) exceeds `Imbalance tolerance`: split
+     * @p triangulation again so that the ranks share @p work evenly.
+     * @p before is called before the split and @p after after it: they
+     * carry the data attached to the mesh (the cracks' fields). Returns whether
+     * the mesh was split again; the caller then rebuilds what depends on the
+     * partition. Collective.
      */
     bool
     balance(parallel::distributed::Triangulation<dim> &triangulation,
             const std::vector<unsigned int>           &work,
+            const double                               measured,
             const std::function<void()>               &before,
             const std::function<void()>               &after) const;
 

@@ -82,11 +82,13 @@ namespace xcrack
   void
   Simulator<dim>::share_work(const bool may_split)
   {
-    std::vector<unsigned int> work = cell_work();
+    const std::vector<unsigned int> work = cell_work();
+    work_imbalance = WorkBalance<dim>::imbalance(triangulation, work);
     if (may_split &&
         work_balance.balance(
           triangulation,
           work,
+          work_imbalance,
           [this]() { level_sets.prepare_for_coarsening_and_refinement(); },
           [this]() { level_sets.interpolate(); }))
       {
@@ -94,9 +96,9 @@ namespace xcrack
         k_error_cells.indicators.reinit(0);
         dof_handler.reinit(triangulation);
         enrichment->set_fe_indices(dof_handler, level_sets);
-        work = cell_work();
+        work_imbalance =
+          WorkBalance<dim>::imbalance(triangulation, cell_work());
       }
-    work_imbalance = WorkBalance<dim>::imbalance(triangulation, work);
   }
 
 
