@@ -211,9 +211,6 @@ main(int argc, char **argv)
   check("reference K with three values in 2D",
         valid + "subsection Fracture parameters\n"
                 "  set Reference K = 1; 0; 0\nend\n");
-  check("error estimate along a 3D front",
-        valid_3d + "subsection Fracture parameters\n"
-                   "  set Error estimate = true\nend\n");
   const std::string k_tolerance =
     with_crack("set Start point = -1, 0.5\nset End point = 0.7, 0.5") +
     "subsection Mesh refinement\n  set Strategy = k tolerance\nend\n";

@@ -261,17 +261,19 @@ namespace xcrack
     void
     compute_fracture_parameters(const bool report = true);
 
-    /// (r_inf, r_sup) of the estimate's wide crown around @p tips: as wide
-    /// as the boundary and the other tips allow (fracture.cc).
+    /// (r_inf, r_sup) of the estimate's wide crown around @p fronts (2D:
+    /// a point each): as wide as the boundary, the other fronts and, in
+    /// 3D, the fronts' curvature allow (fracture.cc).
     std::pair<double, double>
-    wide_crown(const std::vector<Point<dim>> &tips) const;
+    wide_crown(const std::vector<std::vector<FrontPoint<dim>>> &fronts) const;
 
     /**
      * The estimates of the error of the K's in front_values: K on a wide
      * crown (as wide as the boundary and the other tips allow, for a dual
      * problem the mesh resolves), the estimate of its error
-     * (KErrorEstimator, a dual solve per K), and the difference of the two
-     * K's.
+     * (KErrorEstimator, a dual solve per K mode and test function of the
+     * front; along a 3D front the wide crown's K on the reported nodes),
+     * and the difference of the two K's.
      */
     void
     estimate_k_errors(

@@ -35,11 +35,12 @@ namespace xcrack
         "Error estimate",
         "false",
         Patterns::Bool(),
-        "2D: estimate the error of every K (K_exact - K, written as "
+        "Estimate the error of every K (K_exact - K, written as "
         "K_I_error, ... beside the K's): a goal-oriented estimate with "
         "recovered stresses on a crown as wide as the body allows, one "
-        "dual solve per K with the solver's factorization; about as long "
-        "as the solve. See doc/verification.md for its effectivity.");
+        "dual solve per K mode and tip (3D: per test function of the "
+        "smoothing basis) with the solver's factorization. See "
+        "doc/verification.md for its effectivity and cost.");
       prm.declare_entry("Crown radii",
                         "2, 4",
                         Patterns::Anything(),
@@ -281,6 +282,8 @@ namespace xcrack
                                  degree,
                                  curve.length,
                                  curve.closed,
+                                 f < parameters.node_segments.size() ?
+                                   parameters.node_segments[f] :
                                  parameters.front_segments > 0 ?
                                    parameters.front_segments :
                                    static_cast<unsigned int>(
@@ -326,6 +329,8 @@ namespace xcrack
         std::array<std::vector<double>, n_vertices> psi_vertex;
         std::vector<unsigned int>                   active_tests;
         std::vector<Tensor<2, dim>>                 grad_theta(n_test);
+        std::vector<Tensor<2, dim>> point_loads(derivatives ? n_test * n_modes :
+                                                              0);
         for (const auto &cell : dof_handler.active_cell_iterators())
           {
             if (!cell->is_locally_owned())
@@ -428,17 +433,29 @@ namespace xcrack
                 dof_indices.resize(cell->get_fe().n_dofs_per_cell());
                 cell->get_dof_indices(dof_indices);
               }
-            // With derivatives: add grad phi_i : A to the derivative of
-            // b_jm at every shape function i of the cell (values read at
-            // point q of @p values).
-            const auto add_derivative = [&](const FEValues<dim>  &values,
-                                            const unsigned int    q,
-                                            const unsigned int    j,
+            // With derivatives: the derivative of b_jm gets grad phi_i : A
+            // at every shape function i of the cell. The A's of a point
+            // are summed over its terms first (add_derivative), then
+            // contracted with each shape gradient once (flush_point: the
+            // gradients of FE_Enriched's shape functions are slow to read).
+            const auto add_derivative = [&](const unsigned int    j,
                                             const unsigned int    m,
                                             const Tensor<2, dim> &A) {
-              Vector<double> &d = d_cell[j * n_modes + m];
-              for (unsigned int i = 0; i < d.size(); ++i)
-                d[i] += scalar_product(values[displacement].gradient(i, q), A);
+              point_loads[j * n_modes + m] += A;
+            };
+            const auto flush_point = [&](const FEValues<dim> &values,
+                                         const unsigned int   q) {
+              for (unsigned int i = 0; i < dof_indices.size(); ++i)
+                {
+                  const Tensor<2, dim> g = values[displacement].gradient(i, q);
+                  for (const unsigned int j : active_tests)
+                    for (unsigned int m = 0; m < n_modes; ++m)
+                      d_cell[j * n_modes + m][i] +=
+                        scalar_product(g, point_loads[j * n_modes + m]);
+                }
+              for (const unsigned int j : active_tests)
+                for (unsigned int m = 0; m < n_modes; ++m)
+                  point_loads[j * n_modes + m] = Tensor<2, dim>();
             };
             const auto theta_at = [&](const Point<dim>  &xi,
                                       const unsigned int j) {
@@ -538,7 +555,7 @@ namespace xcrack
                                   symmetrize(du_aux[m] * Theta))) +
                                 sigma_aux * transpose(Theta) -
                                 trace(Theta) * sigma_aux;
-                              add_derivative(fe_values, q, j, m, A * JxW);
+                              add_derivative(j, m, A * JxW);
                             }
                         }
 
@@ -582,9 +599,7 @@ namespace xcrack
                                 local[j * n_integrals + m] +=
                                   (div_aux[m] * du_theta) * JxW;
                                 if (derivatives)
-                                  add_derivative(fe_values,
-                                                 q,
-                                                 j,
+                                  add_derivative(j,
                                                  m,
                                                  outer_product(div_aux[m],
                                                                theta) *
@@ -592,6 +607,8 @@ namespace xcrack
                               }
                           }
                       }
+                    if (derivatives)
+                      flush_point(fe_values, q);
                   }
               }
 
@@ -666,33 +683,42 @@ namespace xcrack
                         p * (n_ds * (jump[m] * theta));
                   }
                 if constexpr (dim == 3)
-                  for (unsigned int m = 0; m < n_modes; ++m)
-                    {
-                      const Tensor<1, dim> t_plus =
-                        material.stress<dim>(symmetrize(plus[m])) * n_ds;
-                      const Tensor<1, dim> t_minus =
-                        material.stress<dim>(symmetrize(minus[m])) * n_ds;
-                      for (const unsigned int j : active_tests)
-                        {
-                          const Tensor<1, dim> theta = theta_at(points[k], j);
+                  {
+                    Tensor<1, dim> t_plus[n_modes], t_minus[n_modes];
+                    for (unsigned int m = 0; m < n_modes; ++m)
+                      {
+                        t_plus[m] =
+                          material.stress<dim>(symmetrize(plus[m])) * n_ds;
+                        t_minus[m] =
+                          material.stress<dim>(symmetrize(minus[m])) * n_ds;
+                      }
+                    for (const unsigned int j : active_tests)
+                      {
+                        const Tensor<1, dim> theta = theta_at(points[k], j);
+                        for (unsigned int m = 0; m < n_modes; ++m)
                           local[j * n_integrals + m] +=
-                            t_plus * (grad_u[2 * k] * theta) -
-                            t_minus * (grad_u[2 * k + 1] * theta);
-                          if (derivatives)
+                            t_plus[m] * (grad_u[2 * k] * theta) -
+                            t_minus[m] * (grad_u[2 * k + 1] * theta);
+                      }
+                    // The derivatives, one side after the other.
+                    if (derivatives)
+                      for (const unsigned int side : {0u, 1u})
+                        {
+                          for (const unsigned int j : active_tests)
                             {
-                              add_derivative(side_values,
-                                             2 * k,
-                                             j,
-                                             m,
-                                             outer_product(t_plus, theta));
-                              add_derivative(side_values,
-                                             2 * k + 1,
-                                             j,
-                                             m,
-                                             -outer_product(t_minus, theta));
+                              const Tensor<1, dim> theta =
+                                theta_at(points[k], j);
+                              for (unsigned int m = 0; m < n_modes; ++m)
+                                add_derivative(
+                                  j,
+                                  m,
+                                  side == 0 ?
+                                    outer_product(t_plus[m], theta) :
+                                    -outer_product(t_minus[m], theta));
                             }
+                          flush_point(side_values, 2 * k + side);
                         }
-                    }
+                  }
               }
             flush_derivatives();
           }
@@ -733,8 +759,25 @@ namespace xcrack
                 unit_b[j]   = 1;
                 to_nodes[j] = basis.values_at_nodes(unit_b);
               }
+            const unsigned int first_test = derivatives->test_loads.size();
+            for (unsigned int j = 0; j < n_test; ++j)
+              {
+                std::vector<TrilinosWrappers::MPI::Vector> loads(n_modes);
+                for (unsigned int m = 0; m < n_modes; ++m)
+                  {
+                    loads[m].reinit(dof_handler.locally_owned_dofs(), comm);
+                    loads[m].add(m < 2 ? 0.5 * e_star : material.mu(),
+                                 d_b[j * n_modes + m]);
+                  }
+                derivatives->test_loads.push_back(std::move(loads));
+              }
             for (unsigned int k = 0; k < basis.nodes().size(); ++k)
               {
+                std::vector<std::pair<unsigned int, double>> weights;
+                for (unsigned int j = 0; j < n_test; ++j)
+                  if (to_nodes[j][k] != 0)
+                    weights.emplace_back(first_test + j, to_nodes[j][k]);
+                derivatives->node_weights.push_back(std::move(weights));
                 std::vector<TrilinosWrappers::MPI::Vector> loads(n_modes);
                 for (unsigned int m = 0; m < n_modes; ++m)
                   {

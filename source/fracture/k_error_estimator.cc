@@ -351,9 +351,16 @@ namespace xcrack
     std::vector<types::global_dof_index> recovery_dofs(
       recovery_fe.n_dofs_per_cell());
     Vector<double> local(recovery_fe.n_dofs_per_cell());
-    const auto     index =
+    // The cell-local index of component k of slot s at vertex v, tabulated
+    // (FiniteElement::component_to_system_index() searches a table).
+    std::vector<unsigned int> index_table(n_vertices * n_components);
+    for (unsigned int v = 0; v < n_vertices; ++v)
+      for (unsigned int c = 0; c < n_components; ++c)
+        index_table[v * n_components + c] =
+          recovery_fe.component_to_system_index(c, v);
+    const auto index =
       [&](const unsigned int v, const unsigned int s, const unsigned int k) {
-        return recovery_fe.component_to_system_index(s * (n_stress + 1) + k, v);
+        return index_table[v * n_components + s * (n_stress + 1) + k];
       };
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -427,13 +434,17 @@ namespace xcrack
       indicators->reinit(dof_handler.get_triangulation().n_active_cells());
     std::vector<SymmetricTensor<2, dim>> errors(n_fields);
     std::vector<double>                  share(duals.size());
+    std::vector<Vector<double>>          cell_averages(
+      n_fields, Vector<double>(recovery_fe.n_dofs_per_cell()));
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           const FEValues<dim> &values = fe_values_of(cell);
           rest_of(values);
           const auto level_sets = level_sets_of(cell);
-          recovery_cell(cell)->get_dof_indices(recovery_dofs);
+          // The averages on the cell (read from the vectors once).
+          for (unsigned int f = 0; f < n_fields; ++f)
+            recovery_cell(cell)->get_dof_values(averages[f], cell_averages[f]);
           std::fill(share.begin(), share.end(), 0.);
           for (const unsigned int q : values.quadrature_point_indices())
             {
@@ -451,9 +462,7 @@ namespace xcrack
                   unsigned int       s  = s0;
                   for (const unsigned int candidate : {s0, 0u, 3 - s0})
                     if (candidate < n_slots &&
-                        averages[0]
-                                [recovery_dofs[index(v, candidate, n_stress)]] >
-                          0)
+                        cell_averages[0][index(v, candidate, n_stress)] > 0)
                       {
                         s = candidate;
                         break;
@@ -461,7 +470,7 @@ namespace xcrack
                   for (unsigned int f = 0; f < n_fields; ++f)
                     for (unsigned int k = 0; k < n_stress; ++k)
                       errors[f].access_raw_entry(k) +=
-                        N * averages[f][recovery_dofs[index(v, s, k)]];
+                        N * cell_averages[f][index(v, s, k)];
                 }
               for (unsigned int d = 0; d < duals.size(); ++d)
                 share[d] +=

@@ -90,11 +90,6 @@ namespace xcrack
                 "Fracture parameters/Reference K: give " +
                   std::string(dim == 2 ? "'K_I; K_II'" : "'K_I; K_II; K_III'") +
                   " in " + std::to_string(dim) + "D.");
-    check_input(dim == 2 || !fracture_parameters.error_estimate,
-                "Fracture parameters/Error estimate = true: estimated "
-                "only at 2D tips so far (along a 3D front each K node "
-                "needs its own dual problem on a crown the mesh resolves; "
-                "not built yet).");
 
     prm.enter_subsection("Discretization");
     degree = prm.get_integer("Degree");

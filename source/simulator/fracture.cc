@@ -2,6 +2,7 @@
 #include <deal.II/hp/fe_values.h>
 
 #include <xcrack/fracture/displacement_jump.h>
+#include <xcrack/fracture/front_curve.h>
 #include <xcrack/fracture/interaction_integral.h>
 #include <xcrack/fracture/k_error_estimator.h>
 #include <xcrack/output_file.h>
@@ -204,6 +205,24 @@ namespace xcrack
               << "    |G - G_Irwin| / max G = " << std::setprecision(2)
               << std::round(irwin_gap / g_max * 1e4) * 1e-4 << std::defaultfloat
               << std::endl;
+          if (estimate)
+            {
+              out << "    estimated errors (K_exact - K), largest along the "
+                     "front: "
+                  << std::scientific << std::setprecision(2);
+              for (unsigned int m = 0; m < 3; ++m)
+                out << (m > 0 ? ", " : "") << mode_names[m] << " "
+                    << rounded(estimate_max[m]);
+              out << std::defaultfloat
+                  << (k_error_cells.crown_cells < 4 ?
+                        " (unreliable: the mesh is too coarse for the dual "
+                        "problem, its crown is less than 4 cells wide)" :
+                        "")
+                  << std::endl;
+              if (f == 0)
+                statistics.add_value("estimate_crown_cells",
+                                     k_error_cells.crown_cells);
+            }
           for (const auto &v : values)
             if (v.front == f && !v.crown_clear)
               {
@@ -257,36 +276,134 @@ namespace xcrack
 
 
 
+  namespace
+  {
+    /// The distance from @p x to the nearest of @p fronts (polylines, or
+    /// points in 2D).
+    template <int dim>
+    double
+    distance_to_fronts(const std::vector<FrontCurve<dim>> &curves,
+                       const Point<dim>                   &x)
+    {
+      double d = std::numeric_limits<double>::max();
+      for (const auto &curve : curves)
+        if (curve.points.size() == 1)
+          d = std::min(d, x.distance(curve.points[0].position));
+        else
+          for (unsigned int i = 0; i + 1 < curve.points.size(); ++i)
+            d = std::min(d, curve.segment_distance(i, x));
+      return d;
+    }
+
+
+
+    /**
+     * The smallest radius of curvature of a 3D front: of the circles
+     * through the points a sixteenth of the front apart (the front's
+     * points come from the level sets and wander by O(h) from point to
+     * point; over that span the circle reads the shape, not the noise).
+     * Infinite for a point or a straight front.
+     */
+    template <int dim>
+    double
+    radius_of_curvature(const FrontCurve<dim> &curve)
+    {
+      double radius = std::numeric_limits<double>::max();
+      if constexpr (dim == 3)
+        {
+          if (curve.points.size() < 3)
+            return radius;
+          const double span = curve.length / 16;
+          for (unsigned int k = 0; k <= 64; ++k)
+            {
+              double s = curve.length * k / 64;
+              if (!curve.closed)
+                s = std::clamp(s, span, curve.length - span);
+              const auto wrap = [&](const double t) {
+                return curve.closed ?
+                         t - curve.length * std::floor(t / curve.length) :
+                         t;
+              };
+              const Point<dim>     a  = curve.at(wrap(s - span)).position;
+              const Point<dim>     b  = curve.at(s).position;
+              const Point<dim>     c  = curve.at(wrap(s + span)).position;
+              const Tensor<1, dim> ab = b - a, bc = c - b, ca = a - c;
+              const double         twice_area = cross_product_3d(ab, bc).norm();
+              if (twice_area > 1e-12 * ab.norm() * bc.norm())
+                radius = std::min(radius,
+                                  ab.norm() * bc.norm() * ca.norm() /
+                                    (2 * twice_area));
+            }
+        }
+      return radius;
+    }
+  } // namespace
+
+
+
   template <int dim>
   std::pair<double, double>
-  Simulator<dim>::wide_crown(const std::vector<Point<dim>> &tips) const
+  Simulator<dim>::wide_crown(
+    const std::vector<std::vector<FrontPoint<dim>>> &fronts) const
   {
-    // From r_inf to r_sup = 0.9 d, d the distance from the tips to the
-    // boundary and to each other, r_inf = 0.1 d but at least two cells of
-    // the tip.
+    // From r_inf to r_sup = 0.9 d, d the distance from the fronts to the
+    // boundary (in 3D, from the boundary points that lie in the normal
+    // plane of a front point, not beyond the ends of an open front: a
+    // surface crack's front ends on the boundary) and to each other,
+    // r_inf = 0.1 d but at least two cells of the front. Along a curved
+    // front also r_sup <= rho / 2, rho the smallest radius of curvature:
+    // the crown's frames stay those of the nearest front stretch.
+    std::vector<FrontCurve<dim>> curves;
+    for (const auto &front : fronts)
+      curves.emplace_back(front, 0);
     double clear = std::numeric_limits<double>::max();
     double h     = std::numeric_limits<double>::max();
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-        for (const Point<dim> &tip : tips)
-          {
-            if (cell->point_inside(tip))
-              h = std::min(h, cell->diameter() / std::sqrt(double(dim)));
-            for (const unsigned int face : cell->face_indices())
-              if (cell->face(face)->at_boundary())
-                for (const unsigned int v : cell->face(face)->vertex_indices())
-                  clear =
-                    std::min(clear, tip.distance(cell->face(face)->vertex(v)));
-          }
-    for (unsigned int f = 0; f < tips.size(); ++f)
+        {
+          // The cells the fronts cross (as InteractionIntegral measures
+          // the crown's cells).
+          bool at_front = false;
+          if (dim == 2)
+            for (const auto &front : fronts)
+              at_front = at_front || cell->point_inside(front[0].position);
+          else
+            at_front = distance_to_fronts(curves, cell->center()) <
+                       0.5 * cell->diameter();
+          if (at_front)
+            h = std::min(h, cell->diameter() / std::sqrt(double(dim)));
+          for (const unsigned int face : cell->face_indices())
+            if (cell->face(face)->at_boundary())
+              for (const unsigned int v : cell->face(face)->vertex_indices())
+                for (const auto &curve : curves)
+                  {
+                    const Point<dim> &x          = cell->face(face)->vertex(v);
+                    const auto        projection = curve.project(x);
+                    // (An open front's end lies on the boundary, and the
+                    // vertices there project on it, up to round-off.)
+                    const double s = projection.s;
+                    const bool   at_end =
+                      projection.at_end || (dim == 3 && !curve.closed &&
+                                            (s < 1e-8 * curve.length ||
+                                             s > (1 - 1e-8) * curve.length));
+                    if (!at_end)
+                      clear = std::min(clear, x.distance(projection.foot));
+                  }
+        }
+    for (unsigned int f = 0; f < fronts.size(); ++f)
       for (unsigned int g = 0; g < f; ++g)
-        clear = std::min(clear, tips[f].distance(tips[g]));
+        for (const auto &p : fronts[f])
+          clear =
+            std::min(clear, distance_to_fronts<dim>({curves[g]}, p.position));
+    double rho = std::numeric_limits<double>::max();
+    for (const auto &curve : curves)
+      rho = std::min(rho, radius_of_curvature(curve));
     clear              = Utilities::MPI::min(clear, mpi_communicator);
     h                  = Utilities::MPI::min(h, mpi_communicator);
-    const double outer = 0.9 * clear;
+    const double outer = std::min(0.9 * clear, 0.5 * rho);
     // (On a mesh too coarse for it the crown shrinks to half its width;
     // the run then says the estimate is unreliable.)
-    return {std::min(std::max(0.1 * clear, 2 * h), 0.5 * outer), outer};
+    return {std::min(std::max(outer / 9, 2 * h), 0.5 * outer), outer};
   }
 
 
@@ -298,26 +415,44 @@ namespace xcrack
     const typename InteractionIntegral<dim>::FEValuesOf &fe_values_of,
     const typename InteractionIntegral<dim>::LipsOf     &lips_of)
   {
-    std::vector<Point<dim>> tips;
-    for (const auto &front : fronts)
-      tips.push_back(front[0].position);
     FractureParameters wide                      = fracture_parameters;
     wide.crown_in_cells                          = false;
-    std::tie(wide.crown_inner, wide.crown_outer) = wide_crown(tips);
+    std::tie(wide.crown_inner, wide.crown_outer) = wide_crown(fronts);
+    // Never narrower than the reported K's crown (a coarse front's
+    // polygon has corners of a small radius of curvature): the run then
+    // says that the estimate is unreliable rather than stop.
+    for (const auto &v : front_values)
+      wide.crown_outer = std::max(wide.crown_outer, v.r_sup);
+    wide.crown_inner = std::min(wide.crown_inner, 0.5 * wide.crown_outer);
+    // Along a 3D front: the wide crown's K on the nodes of the reported
+    // ones, which the difference of the two K's needs.
+    if constexpr (dim == 3)
+      for (unsigned int f = 0; f < fronts.size(); ++f)
+        {
+          unsigned int n = 0;
+          for (const auto &v : front_values)
+            n += (v.front == f);
+          const bool closed =
+            fronts[f].size() > 2 &&
+            fronts[f].front().position == fronts[f].back().position;
+          wide.node_segments.push_back(closed ? n : n - 1);
+        }
+    std::vector<FrontCurve<dim>> curves;
+    for (const auto &front : fronts)
+      curves.emplace_back(front, 0);
 
     // The wide crown's width in its coarsest cells (on a graded mesh, not
     // the tip's).
     double h_crown = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-        for (const auto &front : fronts)
-          {
-            const double r    = cell->center().distance(front[0].position);
-            const double half = cell->diameter() / 2;
-            if (r + half > wide.crown_inner && r - half < wide.crown_outer)
-              h_crown =
-                std::max(h_crown, cell->diameter() / std::sqrt(double(dim)));
-          }
+        {
+          const double r    = distance_to_fronts(curves, cell->center());
+          const double half = cell->diameter() / 2;
+          if (r + half > wide.crown_inner && r - half < wide.crown_outer)
+            h_crown =
+              std::max(h_crown, cell->diameter() / std::sqrt(double(dim)));
+        }
     h_crown                   = Utilities::MPI::max(h_crown, mpi_communicator);
     k_error_cells.crown_inner = wide.crown_inner;
     k_error_cells.crown_outer = wide.crown_outer;
@@ -343,30 +478,50 @@ namespace xcrack
                  boundary_conditions.body_force.get(),
                  &derivatives);
 
-    // The dual solutions: one per K, with the factorization of the solve.
-    std::vector<TrilinosWrappers::MPI::Vector> duals;
-    for (const auto &loads : derivatives.loads)
-      for (const auto &load : loads)
-        {
-          TrilinosWrappers::MPI::Vector z(locally_owned_dofs, mpi_communicator);
-          linear_solver.solve_again(z, load);
-          homogeneous.distribute(z);
-          duals.emplace_back(locally_owned_dofs,
-                             locally_relevant_dofs,
-                             mpi_communicator);
-          duals.back() = z;
-        }
-    const KErrorEstimator<dim> estimator(dof_handler,
+    // The dual solutions, one per test function and mode (their
+    // combinations give the K nodes'), with the factorization of the solve;
+    // estimated a few at a time: the recovery holds 21 (3D) values per
+    // vertex and field.
+    const KErrorEstimator<dim>         estimator(dof_handler,
                                          *enrichment,
                                          constraints,
                                          material,
                                          fe_values_of,
                                          fronts,
                                          wide_values);
-    const std::vector<double>  errors =
-      estimator.estimate(solution, duals, &k_error_cells.indicators);
+    const unsigned int                 n_tests = derivatives.test_loads.size();
+    std::vector<std::array<double, 3>> test_errors(n_tests, {{0, 0, 0}});
+    // (At most about 1 GB of recovered stresses: 1.2e8 values, two
+    // vectors per field.)
+    const unsigned int tests_per_batch = std::max<types::global_dof_index>(
+      1, 120'000'000 / (2 * dim * estimator.n_recovery_dofs()));
+    k_error_cells.indicators.reinit(triangulation.n_active_cells());
+    for (unsigned int first = 0; first < n_tests; first += tests_per_batch)
+      {
+        const unsigned int end = std::min(first + tests_per_batch, n_tests);
+        std::vector<TrilinosWrappers::MPI::Vector> duals;
+        for (unsigned int t = first; t < end; ++t)
+          for (const auto &load : derivatives.test_loads[t])
+            {
+              TrilinosWrappers::MPI::Vector z(locally_owned_dofs,
+                                              mpi_communicator);
+              linear_solver.solve_again(z, load);
+              homogeneous.distribute(z);
+              duals.emplace_back(locally_owned_dofs,
+                                 locally_relevant_dofs,
+                                 mpi_communicator);
+              duals.back() = z;
+            }
+        Vector<float>             indicators;
+        const std::vector<double> errors =
+          estimator.estimate(solution, duals, &indicators);
+        k_error_cells.indicators += indicators;
+        unsigned int d = 0;
+        for (unsigned int t = first; t < end; ++t)
+          for (unsigned int m = 0; m < derivatives.test_loads[t].size(); ++m)
+            test_errors[t][m] = errors[d++];
+      }
     // K_exact - K = (K_wide - K) + (K_exact - K_wide).
-    unsigned int d = 0;
     for (unsigned int i = 0; i < front_values.size(); ++i)
       {
         const FrontValues<dim> &w              = wide_values[i];
@@ -375,9 +530,12 @@ namespace xcrack
                                                   w.k_II - v.k_II,
                                                   w.k_III - v.k_III};
         double                  difference     = 0;
-        for (unsigned int m = 0; m < derivatives.loads[i].size(); ++m)
+        for (unsigned int m = 0; m < dim; ++m)
           {
-            front_values[i].k_error[m] = differences[m] + errors[d++];
+            double error = 0;
+            for (const auto &[t, weight] : derivatives.node_weights[i])
+              error += weight * test_errors[t][m];
+            front_values[i].k_error[m] = differences[m] + error;
             difference += std::abs(differences[m]);
           }
         // The difference is the error of the crown at the tip: the

@@ -145,9 +145,12 @@ namespace xcrack
     // refines it before the next solve (k tolerance).
     if (fracture_parameters.error_estimate && dim == 2)
       {
-        std::vector<Point<dim>> tips;
+        std::vector<std::vector<FrontPoint<dim>>> tips;
         for (const FrontMove<dim> &move : front_moves)
-          tips.push_back(move.new_position());
+          {
+            tips.emplace_back(1);
+            tips.back()[0].position = move.new_position();
+          }
         std::tie(k_error_cells.crown_inner, k_error_cells.crown_outer) =
           wide_crown(tips);
       }

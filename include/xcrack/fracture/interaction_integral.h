@@ -39,7 +39,7 @@ namespace xcrack
    *
    * Along a 3D front, `Smoothing`, `Legendre degree` and `Front segments`
    * choose the FrontBasis on which K(s) and G(s) are discretised.
-   * `Error estimate` (2D) adds to every K the estimate of its error
+   * `Error estimate` adds to every K the estimate of its error
    * (KErrorEstimator, Simulator::estimate_k_errors()).
    */
   struct FractureParameters
@@ -62,6 +62,10 @@ namespace xcrack
     /// Equal segments of a 3D front (nodes of the Lagrange bases, points
     /// where K is reported); 0: about r_sup long each.
     unsigned int front_segments = 0;
+    /// Not a parameter: per front, the segments of its K nodes, which
+    /// override Front segments (the K error estimate puts the K of its
+    /// wide crown on the nodes of the reported K's); empty: none.
+    std::vector<unsigned int> node_segments;
     /// K_I; K_II (2D) or K_I; K_II; K_III (3D); null if not given.
     std::shared_ptr<Function<2>> reference_2d;
     std::shared_ptr<Function<3>> reference_3d;
@@ -117,6 +121,17 @@ namespace xcrack
     /// loads[i][m]: of K mode m (K_I, K_II, K_III) at the i-th value
     /// compute() returns (owned entries, compressed).
     std::vector<std::vector<TrilinosWrappers::MPI::Vector>> loads;
+    /**
+     * The same through fewer vectors along a 3D front, whose K nodes
+     * outnumber its test functions: test_loads[t][m], the derivative of
+     * mode m's integral against test function t (the test functions of
+     * all fronts one after the other, scaled as the K's), and
+     * loads[i][m] = sum over (t, w) in node_weights[i] of w
+     * test_loads[t][m]. A dual problem per test function then serves all
+     * nodes (in 2D, one test function per tip and a weight 1).
+     */
+    std::vector<std::vector<TrilinosWrappers::MPI::Vector>>   test_loads;
+    std::vector<std::vector<std::pair<unsigned int, double>>> node_weights;
   };
 
 

@@ -103,6 +103,14 @@ namespace xcrack
              const std::vector<TrilinosWrappers::MPI::Vector> &duals,
              Vector<float> *indicators = nullptr) const;
 
+    /// The size of each field's recovered stresses: the memory of
+    /// estimate() is about twice this per field.
+    types::global_dof_index
+    n_recovery_dofs() const
+    {
+      return recovery_dof_handler.n_dofs();
+    }
+
   private:
     static constexpr unsigned int n_modes = dim;
     static constexpr unsigned int n_stress =
