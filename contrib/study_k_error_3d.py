@@ -1,0 +1,98 @@
+#!/usr/bin/env python3
+"""The K error estimate along a 3D front (issue 16, part 2; doc/verification.md
+"K with a goal-oriented error estimate", the 3D part).
+
+On the 3D K benchmarks with a known K (the penny under remote tension and
+Case 1 in 3D, the Williams field imposed on a through crack), each mesh of
+a front-refined sequence is solved with `Error estimate = true`. For every
+mode the script compares, over the K nodes of the front, the true error
+K_exact - K with the estimate written beside it in front_<step>.csv:
+
+- the largest |error| and the largest |estimate| and their ratio;
+- the means of both (signed), which tell whether the estimate sees the
+  error common to the whole front;
+- the share of nodes whose own effectivity (estimate / error) lies in
+  [0.5, 2], counted only where the error exceeds 1e-3 of K (smaller errors
+  are the round-off of K's mode mixing);
+- the width of the estimate's crown in cells (the run calls the estimate
+  unreliable under 4, marked *) and the time of the K extraction with the
+  estimate against the solve.
+
+    contrib/build.sh release
+    /usr/bin/python3 contrib/study_k_error_3d.py [--meshes 5] [--jobs 2]
+"""
+import argparse
+import csv
+import os
+import statistics
+import tempfile
+from concurrent.futures import ThreadPoolExecutor
+
+from xcrack_runs import front_file, run_xcrack, top
+
+# benchmark, extra entries, reference (K_I, K_II, K_III)
+BENCHMARKS = [
+    ("sif_penny_3d", "", (1.12837917, 0.0, 0.0)),
+    ("exact_mode_I_3d", "subsection Mesh refinement\n  set Strategy = front\n"
+     "end\n", (1.0, 0.0, 0.0)),
+]
+MODES = ("K_I", "K_II", "K_III")
+
+
+def run(benchmark, entries, meshes):
+    """The statistics rows and, per mesh, the front table's rows."""
+    with tempfile.TemporaryDirectory() as work:
+        text = (f"include {top}/prm/benchmarks/{benchmark}.prm\n"
+                f"set Output directory = {work}/out\n"
+                "subsection Output\n  set Timing summary = false\nend\n"
+                "subsection Fracture parameters\n"
+                "  set Error estimate = true\nend\n" + entries +
+                "subsection Mesh refinement\n"
+                f"  set Number of meshes = {meshes}\nend\n")
+        rows = run_xcrack(text, work)
+        fronts = []
+        for row in rows:
+            with open(os.path.join(work, "out",
+                                   front_file(row, meshes))) as f:
+                fronts.append(list(csv.DictReader(f)))
+        return rows, fronts
+
+
+def main(meshes, jobs):
+    with ThreadPoolExecutor(jobs) as pool:
+        results = [pool.submit(run, b, e, meshes) for b, e, _ in BENCHMARKS]
+        results = [r.result() for r in results]
+    print("| benchmark | mesh | DoFs | crown cells | mode | max error "
+          "| max estimate | ratio | mean error | mean estimate "
+          "| nodes in [0.5, 2] | K extraction / solve (s) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for (benchmark, _, reference), (rows, fronts) in zip(BENCHMARKS,
+                                                         results):
+        for row, front in zip(rows, fronts):
+            cells = float(row["estimate_crown_cells"])
+            flag = "" if cells >= 4 else "*"
+            for m, mode in enumerate(MODES):
+                errors = [reference[m] - float(p[mode]) for p in front]
+                estimates = [float(p[mode + "_error"]) for p in front]
+                largest_error = max(abs(e) for e in errors)
+                largest_estimate = max(abs(e) for e in estimates)
+                counted = [(e, s) for e, s in zip(errors, estimates)
+                           if abs(e) > 1e-3 * reference[0]]
+                inside = sum(0.5 <= s / e <= 2 for e, s in counted)
+                print(f"| {benchmark} | {row['mesh']} | {int(row['dofs']):,} "
+                      f"| {cells:.1f}{flag} | {mode} | {largest_error:.2e} "
+                      f"| {largest_estimate:.2e} "
+                      f"| {largest_estimate / largest_error:.2f} "
+                      f"| {statistics.mean(errors):+.2e} "
+                      f"| {statistics.mean(estimates):+.2e} "
+                      f"| {inside} of {len(counted)} "
+                      f"| {float(row['t_fracture']):.1f} / "
+                      f"{float(row['t_solve']):.1f} |")
+
+
+if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--meshes", type=int, default=5)
+    parser.add_argument("--jobs", type=int, default=2)
+    arguments = parser.parse_args()
+    main(arguments.meshes, arguments.jobs)
