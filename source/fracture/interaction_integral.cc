@@ -747,7 +747,8 @@ namespace xcrack
               b[j] = b_all[j * n_integrals + m];
             nodal[m] = basis.values_at_nodes(b);
           }
-        // dK at the nodes: the same map from the b_j, scaled as the K's.
+        // dK: per test function, scaled as the K's, and the weights that
+        // take them to the nodes (the map the b_j take above).
         if (derivatives)
           {
             for (auto &d : d_b)
@@ -778,18 +779,6 @@ namespace xcrack
                   if (to_nodes[j][k] != 0)
                     weights.emplace_back(first_test + j, to_nodes[j][k]);
                 derivatives->node_weights.push_back(std::move(weights));
-                std::vector<TrilinosWrappers::MPI::Vector> loads(n_modes);
-                for (unsigned int m = 0; m < n_modes; ++m)
-                  {
-                    loads[m].reinit(dof_handler.locally_owned_dofs(), comm);
-                    const double scale_m =
-                      (m < 2 ? 0.5 * e_star : material.mu());
-                    for (unsigned int j = 0; j < n_test; ++j)
-                      if (to_nodes[j][k] != 0)
-                        loads[m].add(scale_m * to_nodes[j][k],
-                                     d_b[j * n_modes + m]);
-                  }
-                derivatives->loads.push_back(std::move(loads));
               }
           }
         for (unsigned int k = 0; k < basis.nodes().size(); ++k)

@@ -118,17 +118,15 @@ namespace xcrack
     /// Condenses the derivatives: homogeneous Dirichlet and hanging-node
     /// constraints (the dual problems' test space).
     const AffineConstraints<double> *constraints = nullptr;
-    /// loads[i][m]: of K mode m (K_I, K_II, K_III) at the i-th value
-    /// compute() returns (owned entries, compressed).
-    std::vector<std::vector<TrilinosWrappers::MPI::Vector>> loads;
     /**
-     * The same through fewer vectors along a 3D front, whose K nodes
-     * outnumber its test functions: test_loads[t][m], the derivative of
-     * mode m's integral against test function t (the test functions of
-     * all fronts one after the other, scaled as the K's), and
-     * loads[i][m] = sum over (t, w) in node_weights[i] of w
-     * test_loads[t][m]. A dual problem per test function then serves all
-     * nodes (in 2D, one test function per tip and a weight 1).
+     * Stored per test function, not per K node: along a 3D front the
+     * nodes outnumber the test functions, and a dual problem per test
+     * function serves all nodes. test_loads[t][m]: the derivative of mode
+     * m's (K_I, K_II, K_III) integral against test function t (those of
+     * all fronts one after the other, scaled as the K's; owned entries,
+     * compressed). The derivative of K mode m at the i-th value compute()
+     * returns is the sum over (t, w) in node_weights[i] of w
+     * test_loads[t][m] (in 2D, one test function per tip and a weight 1).
      */
     std::vector<std::vector<TrilinosWrappers::MPI::Vector>>   test_loads;
     std::vector<std::vector<std::pair<unsigned int, double>>> node_weights;
