@@ -218,9 +218,6 @@ main(int argc, char **argv)
         valid + "subsection Mesh refinement\n"
                 "  set Strategy = k tolerance\nend\n");
   check("k tolerance without the K error estimate", k_tolerance);
-  check("k tolerance in 3D",
-        valid_3d + "subsection Mesh refinement\n"
-                   "  set Strategy = k tolerance\nend\n");
   check("k tolerance with a crown in cells",
         k_tolerance + "subsection Fracture parameters\n"
                       "  set Error estimate = true\nend\n");

@@ -267,6 +267,13 @@ namespace xcrack
     std::pair<double, double>
     wide_crown(const std::vector<std::vector<FrontPoint<dim>>> &fronts) const;
 
+    /// Place k_error_cells' wide crown around @p fronts not solved on yet
+    /// (the initial or the moved ones), never narrower than the K's crown
+    /// given as lengths, for a strategy that refines it before the solve
+    /// (k tolerance) (fracture.cc).
+    void
+    expect_wide_crown(const std::vector<std::vector<FrontPoint<dim>>> &fronts);
+
     /**
      * The estimates of the error of the K's in front_values: K on a wide
      * crown (as wide as the boundary and the other tips allow, for a dual
@@ -308,6 +315,16 @@ namespace xcrack
      */
     void
     adapt_mesh_to_fronts();
+
+    /**
+     * Before the first solve of a fresh run with a strategy that has a
+     * goal: refine what the strategy knows it needs before any solve (k
+     * tolerance: its crowns, the estimate's wide one around the initial
+     * fronts included), as before each growth step's solve, so that no
+     * solve is spent on a mesh the goal would not trust (refinement.cc).
+     */
+    void
+    refine_before_first_solve();
 
     /// Execute the marked refinement and coarsening, capped at the levels
     /// of the parameters, carrying the fields; false if nothing was marked.

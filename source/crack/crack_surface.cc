@@ -16,6 +16,7 @@
 #include <map>
 #include <numeric>
 #include <set>
+#include <tuple>
 
 namespace xcrack
 {
@@ -200,6 +201,63 @@ namespace xcrack
           p.e3 = cross_product_3d(p.e1, p.e2);
         }
       return p;
+    }
+
+    /**
+     * Join the loose ends of front chains that lie within @p gap of each
+     * other, the closest first: @p edges between nodes (positions
+     * position[representative[k]]) are rewired to one of the two. Across a
+     * face between a cell and its finer neighbours the fields do not
+     * conform (their values at the hanging nodes are the shape's, not the
+     * coarse face's interpolation), so the coarse cell's crossing of that
+     * face and the fine cells' differ by O(h^2 / curvature radius) and the
+     * chain would break there. An open front's true ends lie on the
+     * boundary, much farther than a fraction of a cell from any other.
+     */
+    template <int dim>
+    void
+    join_loose_ends(const std::vector<Point<dim>>   &position,
+                    const std::vector<unsigned int> &representative,
+                    const double                     gap,
+                    std::set<std::pair<unsigned int, unsigned int>> &edges)
+    {
+      std::vector<unsigned int> degree(representative.size(), 0);
+      for (const auto &[a, b] : edges)
+        {
+          ++degree[a];
+          ++degree[b];
+        }
+      std::vector<unsigned int> ends;
+      for (unsigned int k = 0; k < degree.size(); ++k)
+        if (degree[k] == 1)
+          ends.push_back(k);
+      std::vector<std::tuple<double, unsigned int, unsigned int>> pairs;
+      for (unsigned int i = 0; i < ends.size(); ++i)
+        for (unsigned int j = i + 1; j < ends.size(); ++j)
+          {
+            const double d = position[representative[ends[i]]].distance(
+              position[representative[ends[j]]]);
+            if (d <= gap)
+              pairs.emplace_back(d, ends[i], ends[j]);
+          }
+      if (pairs.empty())
+        return;
+      std::sort(pairs.begin(), pairs.end());
+      std::vector<unsigned int> node(representative.size());
+      std::iota(node.begin(), node.end(), 0);
+      std::vector<bool> joined(representative.size(), false);
+      for (const auto &[d, a, b] : pairs)
+        if (!joined[a] && !joined[b])
+          {
+            node[b]   = a;
+            joined[a] = joined[b] = true;
+          }
+      std::set<std::pair<unsigned int, unsigned int>> rewired;
+      for (const auto &[a, b] : edges)
+        if (node[a] != node[b])
+          rewired.emplace(std::min(node[a], node[b]),
+                          std::max(node[a], node[b]));
+      edges = std::move(rewired);
     }
   } // namespace
 
@@ -420,6 +478,7 @@ namespace xcrack
             std::min(on_segment[k].second, on_segment[k + 1].second),
             std::max(on_segment[k].second, on_segment[k + 1].second));
       }
+    join_loose_ends(position, representative, 0.1 * smallest_cell, edges);
     for (const auto &chain : chain_edges(n_nodes, {edges.begin(), edges.end()}))
       {
         std::vector<FrontPoint<dim>> front;

@@ -26,8 +26,9 @@ namespace xcrack
           "0.01",
           Patterns::Double(0),
           "The goal: the estimated error of every K, relative to the "
-          "largest |K| = sqrt(K_I^2 + K_II^2) over the tips, at most this. "
-          "Needs Fracture parameters/Error estimate = true (2D).");
+          "largest |K| = sqrt(K_I^2 + K_II^2 + K_III^2) over the tips (the "
+          "front's K nodes in 3D), at most this. Needs Fracture "
+          "parameters/Error estimate = true.");
         prm.declare_entry("Refine fraction",
                           "0.5",
                           Patterns::Double(0, 1),
@@ -71,10 +72,6 @@ namespace xcrack
                   "Mesh refinement/K tolerance/Refine fraction must be "
                   "positive, and Refine fraction + Coarsen fraction must "
                   "not exceed 1.");
-      check_input(dim == 2,
-                  strategy +
-                    ": the K error estimate it refines by exists only at 2D "
-                    "tips so far.");
       check_input(this->get_initial_cracks().size() > 0,
                   strategy + " needs a crack (Cracks/Number of cracks = 0).");
       const FractureParameters &fracture = this->get_fracture_parameters();
@@ -126,7 +123,7 @@ namespace xcrack
       double      k_max = 0, error_max = 0;
       for (const FrontValues<dim> &v : values)
         {
-          k_max = std::max(k_max, std::hypot(v.k_I, v.k_II));
+          k_max = std::max(k_max, std::hypot(v.k_I, v.k_II, v.k_III));
           for (unsigned int m = 0; m < dim; ++m)
             error_max = std::max(error_max, std::abs(v.k_error[m]));
         }
@@ -186,7 +183,11 @@ namespace xcrack
     KTolerance<dim>::mark(
       parallel::distributed::Triangulation<dim> &triangulation) const
     {
-      if (this->get_front_values().empty())
+      // A solve that found no front (the crack runs through the body) has
+      // no K to refine for. Before the first solve neither is known, and
+      // the crowns around the fronts the fields draw are refined.
+      if (this->get_front_values().empty() &&
+          !this->get_crack_surfaces().empty())
         return;
       if (!warned && this->get_enrichment()->get_parameters().tip_zone ==
                        EnrichmentParameters::TipZone::geometric)
@@ -260,6 +261,6 @@ namespace xcrack
                            "k tolerance",
                            "refine (and coarsen) until the estimated error "
                            "of every K is below a tolerance, every step "
-                           "(subsection K tolerance; 2D).")
+                           "(subsection K tolerance).")
   } // namespace MeshRefinement
 } // namespace xcrack

@@ -359,6 +359,11 @@ namespace xcrack
 
     std::string key;
     const bool  goal = mesh_refinement->has_goal();
+    if (goal && resume_directory.empty())
+      {
+        TimerOutput::Scope t(*timer, "refine");
+        refine_before_first_solve();
+      }
     for (bool stop = false; !stop;)
       {
         // Step 0 may be solved on several successively refined meshes (a

@@ -337,6 +337,10 @@ namespace xcrack
         }
       return radius;
     }
+
+    /// The wide crown's inner radius on a mesh fine at the fronts, as a
+    /// fraction of its outer one.
+    constexpr double wide_inner_fraction = 1. / 9;
   } // namespace
 
 
@@ -358,7 +362,9 @@ namespace xcrack
       curves.emplace_back(front, 0);
     double clear = std::numeric_limits<double>::max();
     double h     = std::numeric_limits<double>::max();
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    // (The cells, not the DoF handler's: this runs before the first set-up
+    // too.)
+    for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           // The cells the fronts cross (as InteractionIntegral measures
@@ -372,13 +378,20 @@ namespace xcrack
                        0.5 * cell->diameter();
           if (at_front)
             h = std::min(h, cell->diameter() / std::sqrt(double(dim)));
+          // The boundary faces' vertices, and in 3D their centres (on a
+          // mesh one cell thick along a front, every vertex lies beside one
+          // of the front's ends).
           for (const unsigned int face : cell->face_indices())
             if (cell->face(face)->at_boundary())
-              for (const unsigned int v : cell->face(face)->vertex_indices())
+              for (unsigned int v = 0;
+                   v < cell->face(face)->n_vertices() + (dim == 3);
+                   ++v)
                 for (const auto &curve : curves)
                   {
-                    const Point<dim> &x          = cell->face(face)->vertex(v);
-                    const auto        projection = curve.project(x);
+                    const Point<dim> x = (v < cell->face(face)->n_vertices() ?
+                                            cell->face(face)->vertex(v) :
+                                            cell->face(face)->center());
+                    const auto       projection = curve.project(x);
                     // (An open front's end lies on the boundary, and the
                     // vertices there project on it, up to round-off.)
                     const double s = projection.s;
@@ -403,7 +416,26 @@ namespace xcrack
     const double outer = std::min(0.9 * clear, 0.5 * rho);
     // (On a mesh too coarse for it the crown shrinks to half its width;
     // the run then says the estimate is unreliable.)
-    return {std::min(std::max(outer / 9, 2 * h), 0.5 * outer), outer};
+    return {std::min(std::max(wide_inner_fraction * outer, 2 * h), 0.5 * outer),
+            outer};
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::expect_wide_crown(
+    const std::vector<std::vector<FrontPoint<dim>>> &fronts)
+  {
+    // Widened as estimate_k_errors() will (there with the K's crown of the
+    // solve), and its inner radius that of a mesh fine at the fronts: two
+    // of the present cells there would ask a coarse mesh for a narrow crown
+    // and so for many cells that the solve to come would not need.
+    double outer = wide_crown(fronts).second;
+    if (!fracture_parameters.crown_in_cells)
+      outer = std::max(outer, fracture_parameters.crown_outer);
+    k_error_cells.crown_inner = wide_inner_fraction * outer;
+    k_error_cells.crown_outer = outer;
   }
 
 

@@ -142,7 +142,9 @@ namespace xcrack
       cracks_moved = true;
     }
     // The estimate's wide crown around the moved tips, for a strategy that
-    // refines it before the next solve (k tolerance).
+    // refines it before the next solve (k tolerance). Along a 3D front the
+    // last estimate's radii stay: they follow the front's curvature and
+    // clearance, which one step changes little.
     if (fracture_parameters.error_estimate && dim == 2)
       {
         std::vector<std::vector<FrontPoint<dim>>> tips;
@@ -151,8 +153,7 @@ namespace xcrack
             tips.emplace_back(1);
             tips.back()[0].position = move.new_position();
           }
-        std::tie(k_error_cells.crown_inner, k_error_cells.crown_outer) =
-          wide_crown(tips);
+        expect_wide_crown(tips);
       }
     {
       TimerOutput::Scope t(*timer, "refine");

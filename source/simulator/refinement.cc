@@ -104,7 +104,34 @@ namespace xcrack
         mesh_refinement->mark(triangulation);
         if (!execute_refinement())
           break;
+        // Unmoved cracks (before the first solve) are marked by their
+        // shapes, not by fields interpolated from the coarser mesh.
+        update_level_sets();
       }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::refine_before_first_solve()
+  {
+    // The estimate's wide crown around the initial fronts, if it is asked
+    // for: the strategy (k tolerance) refines it too.
+    if (fracture_parameters.error_estimate)
+      {
+        std::vector<std::vector<FrontPoint<dim>>> fronts;
+        for (unsigned int c = 0; c < cracks.size(); ++c)
+          {
+            CrackSurface<dim> surface;
+            surface.extract(level_sets, c);
+            for (const auto &front : surface.fronts())
+              fronts.push_back(front);
+          }
+        if (!fronts.empty())
+          expect_wide_crown(fronts);
+      }
+    adapt_mesh_to_fronts();
   }
 
 

@@ -40,8 +40,8 @@ namespace xcrack
      * the tip's cells).
      *
      * The goal: max over tips and modes |K_exact - K|_estimated <=
-     * Tolerance * max over tips sqrt(K_I^2 + K_II^2), with both crowns
-     * `Crown cells` wide. Relative to the largest K rather than to each
+     * Tolerance * max over tips sqrt(K_I^2 + K_II^2 + K_III^2), with both
+     * crowns `Crown cells` wide. Relative to the largest K rather than to each
      * tip's own, so that a tip whose K vanishes (a closed or shielded one)
      * does not ask for endless refinement.
      */
