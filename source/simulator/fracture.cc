@@ -469,17 +469,17 @@ namespace xcrack
             fronts[f].front().position == fronts[f].back().position;
           wide.node_segments.push_back(closed ? n : n - 1);
         }
-    std::vector<FrontCurve<dim>> curves;
-    for (const auto &front : fronts)
-      curves.emplace_back(front, 0);
 
     // The wide crown's width in its coarsest cells (on a graded mesh, not
-    // the tip's).
-    double h_crown = 0;
+    // the tip's), the distances to the fronts those a refinement strategy
+    // reads (LevelSetFields::cell_front_distances()): what the strategy
+    // refines until the crown is fine enough, the estimate then trusts.
+    const std::vector<double> distances = level_sets.cell_front_distances();
+    double                    h_crown   = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const double r    = distance_to_fronts(curves, cell->center());
+          const double r    = distances[cell->active_cell_index()];
           const double half = cell->diameter() / 2;
           if (r + half > wide.crown_inner && r - half < wide.crown_outer)
             h_crown =
