@@ -26,9 +26,11 @@ namespace xcrack
      * that hold `Refine fraction` of the summed shares are refined, those
      * holding `Coarsen fraction` with the smallest shares coarsened (no
      * refinement by the shares once the estimate is below the tolerance
-     * and only a crown is too coarse to trust it). After a growth step,
-     * before the step's first solve, the mesh is coarsened by the last
-     * estimate's shares and the crowns around the moved fronts are refined.
+     * and only a crown is too coarse to trust it). Before the run's first
+     * solve the crowns around the initial fronts are refined (so that the
+     * first estimate can be trusted); after a growth step, before the
+     * step's first solve, the mesh is coarsened by the last estimate's
+     * shares and the crowns around the moved fronts are refined.
      *
      * Both K's are only as good as the mesh resolves their crowns: the
      * estimate's effectivity was measured 0.1-0.6 with its crown 2-12
