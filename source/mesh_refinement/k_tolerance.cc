@@ -46,7 +46,7 @@ namespace xcrack
           "The goal is trusted once each crown (the K's and the wider one "
           "of the estimate's dual problems) spans this many of its coarsest "
           "cells; coarser cells there are refined too. More costs cells "
-          "away from the tip and makes the estimate more accurate (16: 1.2 "
+          "away from the tip and makes the estimate more accurate (16: 1.1 "
           "to 3.5 times the cells on the 2D benchmarks; "
           "doc/verification.md).");
       }
