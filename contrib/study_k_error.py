@@ -31,7 +31,7 @@ import statistics
 import tempfile
 from concurrent.futures import ThreadPoolExecutor
 
-from xcrack_runs import run_xcrack, top
+from xcrack_runs import benchmark_prm, run_xcrack
 
 # benchmark, extra entries, reference (K_I, K_II)
 BENCHMARKS = [
@@ -47,13 +47,11 @@ BENCHMARKS = [
 
 def run(benchmark, entries, crowns):
     with tempfile.TemporaryDirectory() as work:
-        text = (f"include {top}/prm/benchmarks/{benchmark}.prm\n"
-                f"set Output directory = {work}/out\n"
-                "subsection Output\n  set Timing summary = false\nend\n"
-                "subsection Fracture parameters\n"
-                f"  set Crown radii = {crowns[0]}, {crowns[1]}\n"
-                "  set Crown unit = cells\n"
-                "  set Error estimate = true\nend\n" + entries)
+        text = benchmark_prm(benchmark, work,
+                             "subsection Fracture parameters\n"
+                             f"  set Crown radii = {crowns[0]}, {crowns[1]}\n"
+                             "  set Crown unit = cells\n"
+                             "  set Error estimate = true\nend\n" + entries)
         return run_xcrack(text, work)
 
 
@@ -108,12 +106,11 @@ def cost(runs=3):
     for _ in range(runs):
         for on in (False, True):
             with tempfile.TemporaryDirectory() as work:
-                text = (f"include {top}/prm/benchmarks/exact_mode_I_2d.prm\n"
-                        f"set Output directory = {work}/out\n"
-                        "subsection Output\n  set Timing summary = false\n"
-                        "end\nsubsection Fracture parameters\n"
-                        f"  set Error estimate = {str(on).lower()}\nend\n"
-                        + entries)
+                text = benchmark_prm(
+                    "exact_mode_I_2d", work,
+                    "subsection Fracture parameters\n"
+                    f"  set Error estimate = {str(on).lower()}\nend\n"
+                    + entries)
                 last = run_xcrack(text, work)[-1]
             times[on].append((float(last["t_fracture"]),
                               float(last["t_solve"]), int(last["dofs"])))

@@ -28,7 +28,7 @@ import statistics
 import tempfile
 from concurrent.futures import ThreadPoolExecutor
 
-from xcrack_runs import front_file, run_xcrack, top
+from xcrack_runs import benchmark_prm, front_file, run_xcrack
 
 # benchmark, extra entries, reference (K_I, K_II, K_III)
 BENCHMARKS = [
@@ -42,13 +42,11 @@ MODES = ("K_I", "K_II", "K_III")
 def run(benchmark, entries, meshes):
     """The statistics rows and, per mesh, the front table's rows."""
     with tempfile.TemporaryDirectory() as work:
-        text = (f"include {top}/prm/benchmarks/{benchmark}.prm\n"
-                f"set Output directory = {work}/out\n"
-                "subsection Output\n  set Timing summary = false\nend\n"
-                "subsection Fracture parameters\n"
-                "  set Error estimate = true\nend\n" + entries +
-                "subsection Mesh refinement\n"
-                f"  set Number of meshes = {meshes}\nend\n")
+        text = benchmark_prm(benchmark, work,
+                             "subsection Fracture parameters\n"
+                             "  set Error estimate = true\nend\n" + entries +
+                             "subsection Mesh refinement\n"
+                             f"  set Number of meshes = {meshes}\nend\n")
         rows = run_xcrack(text, work)
         fronts = []
         for row in rows:

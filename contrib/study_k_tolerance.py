@@ -23,7 +23,7 @@ import tempfile
 from concurrent.futures import ThreadPoolExecutor
 
 from study_adaptivity import read_cells
-from xcrack_runs import run_xcrack, top
+from xcrack_runs import benchmark_prm, run_xcrack, top
 
 TOPOLOGICAL = ("subsection Enrichment\n  set Tip enrichment = topological\n"
                "  set Enrichment radius = 0\nend\n")
@@ -40,16 +40,15 @@ def run(benchmark, reference, refinement, picture=False):
     """The rows of statistics.csv; with `picture`, and the corners of the
     last mesh's cells."""
     with tempfile.TemporaryDirectory() as work:
-        text = (f"include {top}/prm/benchmarks/{benchmark}.prm\n"
-                f"set Output directory = {work}/out\n"
-                "subsection Output\n  set Timing summary = false\n"
-                f"  set Write vtu = {'true' if picture else 'false'}\nend\n"
-                + TOPOLOGICAL +
-                "subsection Fracture parameters\n"
-                "  set Crown unit = absolute\n  set Crown radii = 0.1, 0.3\n"
-                f"  set Reference K = {reference[0]}; {reference[1]}\n"
-                "  set Error estimate = true\nend\n"
-                "subsection Mesh refinement\n" + refinement + "end\n")
+        text = benchmark_prm(
+            benchmark, work,
+            f"subsection Output\n  set Write vtu = {str(picture).lower()}\n"
+            "end\n" + TOPOLOGICAL +
+            "subsection Fracture parameters\n"
+            "  set Crown unit = absolute\n  set Crown radii = 0.1, 0.3\n"
+            f"  set Reference K = {reference[0]}; {reference[1]}\n"
+            "  set Error estimate = true\nend\n"
+            "subsection Mesh refinement\n" + refinement + "end\n")
         rows = run_xcrack(text, work)
         if not picture:
             return rows

@@ -10,6 +10,15 @@ top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 xcrack = os.path.join(top, "build", "release", "xcrack")
 
 
+def benchmark_prm(benchmark, work, entries=""):
+    """The parameter text of a study's run: prm/benchmarks/<benchmark>.prm
+    writing to work/out without a timing table, then `entries`."""
+    return (f"include {top}/prm/benchmarks/{benchmark}.prm\n"
+            f"set Output directory = {work}/out\n"
+            "subsection Output\n  set Timing summary = false\nend\n"
+            + entries)
+
+
 def run_xcrack(prm_text, work, ranks=1, binary=None):
     """Write prm_text (its output directory must be work/out) to work/run.prm,
     run xcrack on `ranks` MPI ranks and return the rows of statistics.csv.
