@@ -7,6 +7,7 @@
 
 #include <xcrack/fracture/auxiliary_fields.h>
 #include <xcrack/fracture/front_curve.h>
+#include <xcrack/fracture/integral_derivatives.h>
 #include <xcrack/fracture/interaction_integral.h>
 #include <xcrack/fracture/williams.h>
 #include <xcrack/input_error.h>
@@ -16,6 +17,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace xcrack
@@ -290,15 +292,10 @@ namespace xcrack
                                      std::round(curve.length / r_sup))));
         const unsigned int  n_test = basis.n_test_functions();
         std::vector<double> local(n_test * n_integrals, 0.);
-        // With derivatives: d b_jm / dU per test function j and mode m,
-        // and their cell parts.
-        std::vector<TrilinosWrappers::MPI::Vector> d_b;
-        std::vector<Vector<double>>                d_cell;
-        std::vector<types::global_dof_index>       dof_indices;
+        // With derivatives: d b_jm / dU per test function j and mode m.
+        std::optional<IntegralDerivatives<dim>> d_b;
         if (derivatives)
-          d_b.assign(n_test * n_modes,
-                     TrilinosWrappers::MPI::Vector(
-                       dof_handler.locally_owned_dofs(), comm));
+          d_b.emplace(dof_handler.locally_owned_dofs(), comm, n_test, n_modes);
 
         // Other fronts or tips inside the crown.
         bool clear = true;
@@ -329,8 +326,6 @@ namespace xcrack
         std::array<std::vector<double>, n_vertices> psi_vertex;
         std::vector<unsigned int>                   active_tests;
         std::vector<Tensor<2, dim>>                 grad_theta(n_test);
-        std::vector<Tensor<2, dim>> point_loads(derivatives ? n_test * n_modes :
-                                                              0);
         for (const auto &cell : dof_handler.active_cell_iterators())
           {
             if (!cell->is_locally_owned())
@@ -427,36 +422,7 @@ namespace xcrack
                     break;
                   }
             if (derivatives)
-              {
-                d_cell.assign(n_test * n_modes,
-                              Vector<double>(cell->get_fe().n_dofs_per_cell()));
-                dof_indices.resize(cell->get_fe().n_dofs_per_cell());
-                cell->get_dof_indices(dof_indices);
-              }
-            // With derivatives: the derivative of b_jm gets grad phi_i : A
-            // at every shape function i of the cell. The A's of a point
-            // are summed over its terms first (add_derivative), then
-            // contracted with each shape gradient once (flush_point: the
-            // gradients of FE_Enriched's shape functions are slow to read).
-            const auto add_derivative = [&](const unsigned int    j,
-                                            const unsigned int    m,
-                                            const Tensor<2, dim> &A) {
-              point_loads[j * n_modes + m] += A;
-            };
-            const auto flush_point = [&](const FEValues<dim> &values,
-                                         const unsigned int   q) {
-              for (unsigned int i = 0; i < dof_indices.size(); ++i)
-                {
-                  const Tensor<2, dim> g = values[displacement].gradient(i, q);
-                  for (const unsigned int j : active_tests)
-                    for (unsigned int m = 0; m < n_modes; ++m)
-                      d_cell[j * n_modes + m][i] +=
-                        scalar_product(g, point_loads[j * n_modes + m]);
-                }
-              for (const unsigned int j : active_tests)
-                for (unsigned int m = 0; m < n_modes; ++m)
-                  point_loads[j * n_modes + m] = Tensor<2, dim>();
-            };
+              d_b->reinit(cell, active_tests);
             const auto theta_at = [&](const Point<dim>  &xi,
                                       const unsigned int j) {
               Tensor<1, dim> value;
@@ -555,7 +521,7 @@ namespace xcrack
                                   symmetrize(du_aux[m] * Theta))) +
                                 sigma_aux * transpose(Theta) -
                                 trace(Theta) * sigma_aux;
-                              add_derivative(j, m, A * JxW);
+                              d_b->add(j, m, A * JxW);
                             }
                         }
 
@@ -599,31 +565,21 @@ namespace xcrack
                                 local[j * n_integrals + m] +=
                                   (div_aux[m] * du_theta) * JxW;
                                 if (derivatives)
-                                  add_derivative(j,
-                                                 m,
-                                                 outer_product(div_aux[m],
-                                                               theta) *
-                                                   JxW);
+                                  d_b->add(j,
+                                           m,
+                                           outer_product(div_aux[m], theta) *
+                                             JxW);
                               }
                           }
                       }
                     if (derivatives)
-                      flush_point(fe_values, q);
+                      d_b->flush_point(fe_values, q);
                   }
               }
 
             // The cell's derivatives so far into the global ones.
-            const auto flush_derivatives = [&]() {
-              if (!derivatives)
-                return;
-              for (unsigned int i = 0; i < d_cell.size(); ++i)
-                {
-                  derivatives->constraints->distribute_local_to_global(
-                    d_cell[i], dof_indices, d_b[i]);
-                  d_cell[i] = 0;
-                }
-            };
-            flush_derivatives();
+            if (derivatives)
+              d_b->flush_cell(*derivatives->constraints);
 
             // Lip terms. With a pressure: - int t_i [u_i,k] theta_k, t = p n
             // on the lsn > 0 lip and -p n on the other. Along a curved 3D
@@ -709,18 +665,18 @@ namespace xcrack
                               const Tensor<1, dim> theta =
                                 theta_at(points[k], j);
                               for (unsigned int m = 0; m < n_modes; ++m)
-                                add_derivative(
-                                  j,
-                                  m,
-                                  side == 0 ?
-                                    outer_product(t_plus[m], theta) :
-                                    -outer_product(t_minus[m], theta));
+                                d_b->add(j,
+                                         m,
+                                         side == 0 ?
+                                           outer_product(t_plus[m], theta) :
+                                           -outer_product(t_minus[m], theta));
                             }
-                          flush_point(side_values, 2 * k + side);
+                          d_b->flush_point(side_values, 2 * k + side);
                         }
                   }
               }
-            flush_derivatives();
+            if (derivatives)
+              d_b->flush_cell(*derivatives->constraints);
           }
 
         std::vector<double> b_all(local.size());
@@ -751,8 +707,6 @@ namespace xcrack
         // take them to the nodes (the map the b_j take above).
         if (derivatives)
           {
-            for (auto &d : d_b)
-              d.compress(VectorOperation::add);
             std::vector<std::vector<double>> to_nodes(n_test);
             for (unsigned int j = 0; j < n_test; ++j)
               {
@@ -763,13 +717,10 @@ namespace xcrack
             const unsigned int first_test = derivatives->test_loads.size();
             for (unsigned int j = 0; j < n_test; ++j)
               {
-                std::vector<TrilinosWrappers::MPI::Vector> loads(n_modes);
+                std::vector<TrilinosWrappers::MPI::Vector> loads;
                 for (unsigned int m = 0; m < n_modes; ++m)
-                  {
-                    loads[m].reinit(dof_handler.locally_owned_dofs(), comm);
-                    loads[m].add(m < 2 ? 0.5 * e_star : material.mu(),
-                                 d_b[j * n_modes + m]);
-                  }
+                  loads.push_back(
+                    d_b->scaled(j, m, m < 2 ? 0.5 * e_star : material.mu()));
                 derivatives->test_loads.push_back(std::move(loads));
               }
             for (unsigned int k = 0; k < basis.nodes().size(); ++k)
