@@ -150,13 +150,13 @@ namespace xcrack
      * so the angle of a shifted point is taken on the branch of @p angle,
      * that of x itself.
      *
-     * The step is not a free choice: on the concave side of a vertex of
-     * the front polyline the nearest foot jumps from one segment to the
-     * next across the bisector, and the auxiliary fields with it; the few
-     * points within a step of such a plane read the jump as a divergence
-     * of order 1 / step, a sampled stand-in for the jump term that the
-     * integral lacks. doc/verification.md ("The divergence term") measures
-     * what other steps do to K.
+     * The step matters only where the foot is not continuous: the
+     * normal-plane foot of FrontCurve::project is, but it falls back to
+     * the nearest point farther than half the radius of curvature on the
+     * concave side, and that foot jumps across the bisector of each vertex
+     * of the front polyline, the auxiliary fields with it. Points within a
+     * step of such a plane read the jump as a divergence of order 1 /
+     * step. doc/verification.md ("The divergence term") measures both.
      */
     template <int dim, int n_modes>
     void

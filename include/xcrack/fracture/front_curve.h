@@ -54,10 +54,18 @@ namespace xcrack
       , step(std::min(step, 0.25 * points.back().s))
     {}
 
-    /// Projection of @p x on the segments @p first to @p last - 1 (on
-    /// all by default; a single point in 2D): the nearest point, which on
-    /// the concave side of a vertex jumps from one segment to the next
-    /// across the bisector (doc/verification.md, "The divergence term").
+    /**
+     * The foot of @p x on the front: in 3D the abscissa s whose normal
+     * plane holds x, (x - p(s)) . e3(s) = 0, found from the nearest point
+     * of the segments @p first to @p last - 1 (all by default). The
+     * nearest point itself jumps across the bisector plane of each vertex
+     * on the concave side, and the auxiliary fields that live in its
+     * frame jump with it (doc/verification.md, "The divergence term");
+     * the normal-plane foot is as continuous as the frame, and it is the
+     * foot whose grad s the auxiliary fields' turning term assumes
+     * (aux_gradients()). The root is unique closer to the front than its
+     * radius of curvature. A single point in 2D.
+     */
     Projection
     project(const Point<dim>  &x,
             const unsigned int first = 0,
@@ -96,14 +104,9 @@ namespace xcrack
       result.R      = frame_at(result.s, best_i);
       if (dim == 3 && step > 0)
         {
-          double s_minus = result.s - step, s_plus = result.s + step;
-          if (!closed)
-            {
-              s_minus = std::max(s_minus, 0.);
-              s_plus  = std::min(s_plus, length);
-            }
-          result.dR = (frame_at(s_plus, best_i) - frame_at(s_minus, best_i)) /
-                      (s_plus - s_minus);
+          result.dR = frame_derivative(result.s, best_i);
+          if (!result.at_end)
+            normal_plane_foot(x, best_i, result);
         }
       return result;
     }
@@ -185,6 +188,97 @@ namespace xcrack
     const double                        length;
 
   private:
+    /// d R / d s at abscissa @p s: the central difference over the step
+    /// (one-sided at the ends of an open front).
+    Tensor<2, dim>
+    frame_derivative(const double s, const unsigned int hint) const
+    {
+      double s_minus = s - step, s_plus = s + step;
+      if (!closed)
+        {
+          s_minus = std::max(s_minus, 0.);
+          s_plus  = std::min(s_plus, length);
+        }
+      return (frame_at(s_plus, hint) - frame_at(s_minus, hint)) /
+             (s_plus - s_minus);
+    }
+
+    /**
+     * Moves @p projection, the nearest point of @p x on segment @p hint,
+     * to the root of g(s) = (x - p(s)) . e3(s): a Newton step with
+     * g'(s) = -(1 + x1 de1/ds . e3 + x2 de2/ds . e3) from the nearest
+     * point's frame, then secant steps (g is only piecewise smooth: p is a
+     * polyline, e3 a chord). The nearest point is within a fraction of a
+     * segment of the root, so a few steps reach round-off; an open front's
+     * foot stays on it (at_end beyond an end).
+     *
+     * Far from the front, towards its centres of curvature, the normal
+     * planes of nearby abscissae cross and the root is neither unique nor
+     * well conditioned (at a circle's centre every s is one). There, where
+     * the local coordinates' Jacobian h_s = 1 + x1 de1/ds . e3 + x2 de2/ds
+     * . e3 falls under 1/2 (x farther than half the radius of curvature
+     * on the concave side), or where the steps do not settle or wander
+     * farther than x's distance from the front plus a segment, the
+     * nearest point stays: crowns that reach so far have no continuous
+     * foot to offer.
+     */
+    void
+    normal_plane_foot(const Point<dim>  &x,
+                      const unsigned int hint,
+                      Projection        &projection) const
+    {
+      const auto g = [&](const double s, const Tensor<2, dim> &R) {
+        return (x - position_at(s, hint)) * R[2];
+      };
+      const Tensor<1, dim> xl = projection.R * (x - projection.foot);
+      double       slope = -(1 + xl[0] * (projection.dR[0] * projection.R[2]) +
+                       xl[1] * (projection.dR[1] * projection.R[2]));
+      double       s_old = projection.s;
+      double       g_old = g(s_old, projection.R);
+      double       s     = s_old;
+      const double tolerance = 1e-14 * length;
+      bool         converged = (g_old == 0);
+      for (unsigned int iteration = 0; iteration < 20 && !converged;
+           ++iteration)
+        {
+          if (slope == 0)
+            break;
+          double s_new = s_old - g_old / slope;
+          if (!closed)
+            s_new = std::clamp(s_new, 0., length);
+          s = s_new;
+          if (std::abs(s_new - s_old) <= tolerance)
+            {
+              converged = true;
+              break;
+            }
+          const double g_new = g(s_new, frame_at(s_new, hint));
+          slope              = (g_new - g_old) / (s_new - s_old);
+          s_old              = s_new;
+          g_old              = g_new;
+          converged          = (g_new == 0);
+        }
+      const double segment = points[hint + 1].s - points[hint].s;
+      const double reach   = xl.norm() + segment;
+      if (!converged || std::abs(s - projection.s) > reach)
+        return;
+      if (closed)
+        s -= length * std::floor(s / length);
+      Projection foot;
+      foot.s                  = s;
+      foot.foot               = position_at(s, hint);
+      foot.R                  = frame_at(s, hint);
+      foot.dR                 = frame_derivative(s, hint);
+      const Tensor<1, dim> yl = foot.R * (x - foot.foot);
+      const double         h_s =
+        1 + yl[0] * (foot.dR[0] * foot.R[2]) + yl[1] * (foot.dR[1] * foot.R[2]);
+      if (h_s < 0.5)
+        return;
+      foot.at_end = !closed && (s <= 0 || s >= length) &&
+                    std::abs(g(s, foot.R)) > 1e-12 * length;
+      projection = foot;
+    }
+
     /**
      * The segment holding abscissa @p s (in [0, length]): the last point
      * at or before s, clamped to the segments. With @p hint (a segment
