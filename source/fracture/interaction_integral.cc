@@ -156,7 +156,8 @@ namespace xcrack
      * concave side, and that foot jumps across the bisector of each vertex
      * of the front polyline, the auxiliary fields with it. Points within a
      * step of such a plane read the jump as a divergence of order 1 /
-     * step. doc/verification.md ("The divergence term") measures both.
+     * step. doc/verification.md ("The divergence term and the foot on
+     * the front") measures both.
      */
     template <int dim, int n_modes>
     void

@@ -60,11 +60,12 @@ namespace xcrack
      * of the segments @p first to @p last - 1 (all by default). The
      * nearest point itself jumps across the bisector plane of each vertex
      * on the concave side, and the auxiliary fields that live in its
-     * frame jump with it (doc/verification.md, "The divergence term");
-     * the normal-plane foot is as continuous as the frame, and it is the
-     * foot whose grad s the auxiliary fields' turning term assumes
-     * (aux_gradients()). The root is unique closer to the front than its
-     * radius of curvature. A single point in 2D.
+     * frame jump with it; the normal-plane foot is as continuous as the
+     * frame, and it is the foot whose grad s the auxiliary fields'
+     * turning term assumes (aux_gradients()). Beyond half the radius of
+     * curvature on the concave side the nearest point stays
+     * (normal_plane_foot()). doc/verification.md, "The divergence term
+     * and the foot on the front", measures both. A single point in 2D.
      */
     Projection
     project(const Point<dim>  &x,
