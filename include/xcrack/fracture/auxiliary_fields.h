@@ -47,14 +47,15 @@ namespace xcrack
     Tensor<1, 3> u[3];
     Tensor<2, 3> local[3];
     unit.unit_modes(r, angle, u, local);
-    const Tensor<2, dim> &R   = projection.R;
-    const double          h_s = projection.jacobian_s(xl);
+    const Tensor<2, dim> &R = projection.R;
     for (unsigned int m = 0; m < n_modes; ++m)
       {
         gradients[m] = transpose(R) * leading_block<dim>(local[m]) * R;
         if constexpr (dim == 3)
           {
-            const Tensor<1, 3> e3 = R[2];
+            const Tensor<1, 3> e3  = R[2];
+            const double       h_s = 1 + xl[0] * (projection.dR[0] * e3) +
+                               xl[1] * (projection.dR[1] * e3);
             for (unsigned int a = 0; a < 3; ++a)
               gradients[m] +=
                 (u[m][a] / h_s) * outer_product(projection.dR[a], e3);

@@ -44,18 +44,6 @@ namespace xcrack
       Tensor<2, dim> dR;
       /// Open front and x beyond one of its ends.
       bool at_end = false;
-
-      /// h_s = 1 + x1 de1/ds . e3 + x2 de2/ds . e3 at local coordinates
-      /// @p xl: the Jacobian of the local coordinates along s, grad s = e3
-      /// / h_s (1 in 2D).
-      double
-      jacobian_s(const Tensor<1, dim> &xl) const
-      {
-        if constexpr (dim == 3)
-          return 1 + xl[0] * (dR[0] * R[2]) + xl[1] * (dR[1] * R[2]);
-        else
-          return 1;
-      }
     };
 
     FrontCurve(const std::vector<FrontPoint<dim>> &points, const double step)
@@ -219,7 +207,7 @@ namespace xcrack
     /**
      * Moves @p projection, the nearest point of @p x on segment @p hint,
      * to the root of g(s) = (x - p(s)) . e3(s): a Newton step with
-     * g'(s) = -h_s (Projection::jacobian_s()) from the nearest
+     * g'(s) = -(1 + x1 de1/ds . e3 + x2 de2/ds . e3) from the nearest
      * point's frame, then secant steps (g is only piecewise smooth: p is a
      * polyline, e3 a chord). The nearest point is within a fraction of a
      * segment of the root, so a few steps reach round-off; an open front's
@@ -228,7 +216,8 @@ namespace xcrack
      * Far from the front, towards its centres of curvature, the normal
      * planes of nearby abscissae cross and the root is neither unique nor
      * well conditioned (at a circle's centre every s is one). There, where
-     * h_s falls under 1/2 (x farther than half the radius of curvature
+     * the local coordinates' Jacobian h_s = 1 + x1 de1/ds . e3 + x2 de2/ds
+     * . e3 falls under 1/2 (x farther than half the radius of curvature
      * on the concave side), or where the steps do not settle or wander
      * farther than x's distance from the front plus a segment, the
      * nearest point stays: crowns that reach so far have no continuous
@@ -242,13 +231,14 @@ namespace xcrack
       const auto g = [&](const double s, const Tensor<2, dim> &R) {
         return (x - position_at(s, hint)) * R[2];
       };
-      const Tensor<1, dim> xl        = projection.R * (x - projection.foot);
-      double               slope     = -projection.jacobian_s(xl);
-      double               s_old     = projection.s;
-      double               g_old     = g(s_old, projection.R);
-      double               s         = s_old;
-      const double         tolerance = 1e-14 * length;
-      bool                 converged = (g_old == 0);
+      const Tensor<1, dim> xl = projection.R * (x - projection.foot);
+      double       slope = -(1 + xl[0] * (projection.dR[0] * projection.R[2]) +
+                       xl[1] * (projection.dR[1] * projection.R[2]));
+      double       s_old = projection.s;
+      double       g_old = g(s_old, projection.R);
+      double       s     = s_old;
+      const double tolerance = 1e-14 * length;
+      bool         converged = (g_old == 0);
       for (unsigned int iteration = 0; iteration < 20 && !converged;
            ++iteration)
         {
@@ -276,11 +266,14 @@ namespace xcrack
       if (closed)
         s -= length * std::floor(s / length);
       Projection foot;
-      foot.s    = s;
-      foot.foot = position_at(s, hint);
-      foot.R    = frame_at(s, hint);
-      foot.dR   = frame_derivative(s, hint);
-      if (foot.jacobian_s(foot.R * (x - foot.foot)) < 0.5)
+      foot.s                  = s;
+      foot.foot               = position_at(s, hint);
+      foot.R                  = frame_at(s, hint);
+      foot.dR                 = frame_derivative(s, hint);
+      const Tensor<1, dim> yl = foot.R * (x - foot.foot);
+      const double         h_s =
+        1 + yl[0] * (foot.dR[0] * foot.R[2]) + yl[1] * (foot.dR[1] * foot.R[2]);
+      if (h_s < 0.5)
         return;
       foot.at_end = !closed && (s <= 0 || s >= length) &&
                     std::abs(g(s, foot.R)) > 1e-12 * length;
