@@ -140,78 +140,6 @@ namespace xcrack
 
 
 
-  namespace
-  {
-    /**
-     * Divergence of the auxiliary stresses of the unit fields (K_I, K_II,
-     * K_III = 1; @p unit gives mu and kappa) at @p x, whose projection on
-     * the front is @p base, by central differences of C : eps(u^aux) over
-     * a step 1e-4 r. The Williams fields extend smoothly across the lips,
-     * so the angle of a shifted point is taken on the branch of @p angle,
-     * that of x itself.
-     *
-     * The step matters only where the foot is not continuous: the
-     * normal-plane foot of FrontCurve::project is, but it falls back to
-     * the nearest point farther than half the radius of curvature on the
-     * concave side, and that foot jumps across the bisector of each vertex
-     * of the front polyline, the auxiliary fields with it. Points within a
-     * step of such a plane read the jump as a divergence of order 1 /
-     * step. doc/verification.md ("The divergence term and the foot on
-     * the front") measures both.
-     */
-    template <int dim, int n_modes>
-    void
-    aux_stress_divergence(const WilliamsField                        &unit,
-                          const FrontCurve<dim>                      &curve,
-                          const Point<dim>                           &x,
-                          const typename FrontCurve<dim>::Projection &base,
-                          const double                                angle,
-                          const unsigned int                          first,
-                          const unsigned int                          last,
-                          Tensor<1, dim> (&divergence)[n_modes])
-    {
-      const double r      = (base.R * (x - base.foot)).norm();
-      const double delta  = 1e-4 * r;
-      const double mu     = unit.mu,
-                   lambda = mu * (3 - unit.kappa) / (unit.kappa - 1);
-      for (unsigned int m = 0; m < n_modes; ++m)
-        divergence[m] = Tensor<1, dim>();
-      // The shifted points' feet lie on the segments nearest to x (their
-      // distances change by delta at most): the same feet as from
-      // first..last, found on fewer segments.
-      const auto near = curve.near_segments(x, 4 * delta, first, last);
-      for (unsigned int j = 0; j < dim; ++j)
-        for (const double sign : {1., -1.})
-          {
-            Point<dim> y = x;
-            y[j] += sign * delta;
-            const auto projection   = curve.project(y, near.first, near.last);
-            const Tensor<1, dim> yl = projection.R * (y - projection.foot);
-            double               a  = std::atan2(yl[1], yl[0]);
-            if (a - angle > numbers::PI)
-              a -= 2 * numbers::PI;
-            else if (a - angle < -numbers::PI)
-              a += 2 * numbers::PI;
-            const double   ry = std::hypot(yl[0], yl[1]);
-            Tensor<2, dim> g[n_modes];
-            aux_gradients<dim, n_modes>(unit, projection, yl, ry, a, g);
-            for (unsigned int m = 0; m < n_modes; ++m)
-              {
-                const SymmetricTensor<2, dim> eps = symmetrize(g[m]);
-                // sigma_ij,j: only column j of sigma(y) matters here.
-                for (unsigned int i = 0; i < dim; ++i)
-                  divergence[m][i] +=
-                    sign *
-                    (lambda * trace(eps) * (i == j ? 1. : 0.) +
-                     2 * mu * eps[i][j]) /
-                    (2 * delta);
-              }
-          }
-    }
-  } // namespace
-
-
-
   template <int dim>
   std::vector<FrontValues<dim>>
   InteractionIntegral<dim>::compute(
@@ -549,14 +477,8 @@ namespace xcrack
                     if constexpr (dim == 3)
                       {
                         Tensor<1, dim> div_aux[n_modes];
-                        aux_stress_divergence<dim, n_modes>(unit,
-                                                            curve,
-                                                            x,
-                                                            projection,
-                                                            angle,
-                                                            first,
-                                                            last,
-                                                            div_aux);
+                        aux_stress_divergence<n_modes>(
+                          unit, curve, x, projection, xl, angle, div_aux);
                         for (const unsigned int j : active_tests)
                           {
                             const Tensor<1, dim> theta    = theta_at(xi, j);

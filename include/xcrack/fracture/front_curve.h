@@ -44,6 +44,34 @@ namespace xcrack
       Tensor<2, dim> dR;
       /// Open front and x beyond one of its ends.
       bool at_end = false;
+      /**
+       * Which foot this is: the normal-plane foot, or where project()
+       * falls back to it, the nearest point of the polyline, inside a
+       * segment or at a vertex (an end of an open front included). They
+       * move differently with x (grad_s()).
+       */
+      enum class Kind
+      {
+        normal_plane,
+        nearest_on_segment,
+        nearest_at_vertex
+      };
+      Kind kind = Kind::nearest_at_vertex;
+      /// The segment the foot was searched from (where walks along the
+      /// front start).
+      unsigned int segment = 0;
+
+      /// h_s = 1 + x1 de1/ds . e3 + x2 de2/ds . e3 at local coordinates
+      /// @p xl: the Jacobian of the local coordinates along s, grad s = e3
+      /// / h_s on a smooth front (1 in 2D).
+      double
+      jacobian_s(const Tensor<1, dim> &xl) const
+      {
+        if constexpr (dim == 3)
+          return 1 + xl[0] * (dR[0] * R[2]) + xl[1] * (dR[1] * R[2]);
+        else
+          return 1;
+      }
     };
 
     FrontCurve(const std::vector<FrontPoint<dim>> &points, const double step)
@@ -98,8 +126,12 @@ namespace xcrack
         }
       const FrontPoint<dim> &a = points[best_i];
       const FrontPoint<dim> &b = points[best_i + 1];
-      result.foot   = a.position + best_t * (b.position - a.position);
-      result.s      = a.s + best_t * (b.s - a.s);
+      result.foot    = a.position + best_t * (b.position - a.position);
+      result.s       = a.s + best_t * (b.s - a.s);
+      result.segment = best_i;
+      result.kind =
+        (best_t > 0 && best_t < 1 ? Projection::Kind::nearest_on_segment :
+                                    Projection::Kind::nearest_at_vertex);
       result.at_end = !closed && ((best_i == 0 && best_t == 0) ||
                                   (best_i + 2 == points.size() && best_t == 1));
       result.R      = frame_at(result.s, best_i);
@@ -160,6 +192,84 @@ namespace xcrack
       return (x - (points[i].position + t * ab)).norm();
     }
 
+    /**
+     * The foot moved along the front to abscissa @p s, with its frame and
+     * the frame's derivative there (the kind of @p projection kept): a
+     * field that lives in the foot's frame, evaluated at a fixed x with
+     * this foot, gives that field's derivative along s.
+     */
+    Projection
+    moved(const Projection &projection, const double s) const
+    {
+      Projection result = projection;
+      result.s          = s;
+      result.foot       = position_at(s, projection.segment);
+      result.R          = frame_at(s, projection.segment);
+      if (dim == 3 && step > 0)
+        result.dR = frame_derivative(s, projection.segment);
+      return result;
+    }
+
+    /**
+     * The abscissae at which derivatives along s around @p projection are
+     * differenced: s -+ a ten-thousandth of the foot's segment (clamped
+     * to the ends of an open front). The frame is only piecewise smooth
+     * in s (a polyline, interpolated normals, chords), so the step is a
+     * fraction of the scale on which its pieces vary.
+     */
+    std::pair<double, double>
+    difference_abscissae(const Projection &projection) const
+    {
+      const unsigned int i     = projection.segment;
+      const double       h     = 1e-4 * (points[i + 1].s - points[i].s);
+      double             minus = projection.s - h, plus = projection.s + h;
+      if (!closed)
+        {
+          minus = std::max(minus, 0.);
+          plus  = std::min(plus, length);
+        }
+      return {minus, plus};
+    }
+
+    /**
+     * grad s at @p x, whose foot is @p projection: how the foot moves with
+     * x. For the normal-plane foot, from (x - p(s)) . e3(s) = 0,
+     * grad s = e3 / (p' . e3 - (x - p) . e3'), with p' and e3' the
+     * derivatives along s of the polyline and of the frame that project()
+     * solved with (on a smooth front e3 / h_s); for the nearest point
+     * inside a segment, the segment's direction over its length; zero at a
+     * vertex, where the foot stays while x moves. (The nearest point also
+     * jumps across the bisector planes of vertices; that jump is no
+     * gradient.) Zero in 2D.
+     */
+    Tensor<1, dim>
+    grad_s(const Point<dim> &x, const Projection &projection) const
+    {
+      Tensor<1, dim> result;
+      if (points.size() == 1)
+        return result;
+      if (projection.kind == Projection::Kind::nearest_on_segment)
+        {
+          const FrontPoint<dim> &a  = points[projection.segment];
+          const FrontPoint<dim> &b  = points[projection.segment + 1];
+          const Tensor<1, dim>   ab = b.position - a.position;
+          result                    = ab * ((b.s - a.s) / (ab * ab));
+        }
+      else if constexpr (dim == 3)
+        if (projection.kind == Projection::Kind::normal_plane)
+          {
+            const auto [minus, plus] = difference_abscissae(projection);
+            const unsigned int   i   = projection.segment;
+            const Tensor<1, dim> dp =
+              (position_at(plus, i) - position_at(minus, i)) / (plus - minus);
+            const Tensor<1, dim> de3 =
+              (frame_at(plus, i)[2] - frame_at(minus, i)[2]) / (plus - minus);
+            const Tensor<1, dim> e3 = projection.R[2];
+            result = e3 / (dp * e3 - (x - projection.foot) * de3);
+          }
+      return result;
+    }
+
     /// The front point (position and frame) at abscissa @p s.
     FrontPoint<dim>
     at(const double s) const
@@ -207,8 +317,8 @@ namespace xcrack
     /**
      * Moves @p projection, the nearest point of @p x on segment @p hint,
      * to the root of g(s) = (x - p(s)) . e3(s): a Newton step with
-     * g'(s) = -(1 + x1 de1/ds . e3 + x2 de2/ds . e3) from the nearest
-     * point's frame, then secant steps (g is only piecewise smooth: p is a
+     * g'(s) = -h_s (Projection::jacobian_s()) from the nearest point's
+     * frame, then secant steps (g is only piecewise smooth: p is a
      * polyline, e3 a chord). The nearest point is within a fraction of a
      * segment of the root, so a few steps reach round-off; an open front's
      * foot stays on it (at_end beyond an end).
@@ -216,8 +326,7 @@ namespace xcrack
      * Far from the front, towards its centres of curvature, the normal
      * planes of nearby abscissae cross and the root is neither unique nor
      * well conditioned (at a circle's centre every s is one). There, where
-     * the local coordinates' Jacobian h_s = 1 + x1 de1/ds . e3 + x2 de2/ds
-     * . e3 falls under 1/2 (x farther than half the radius of curvature
+     * h_s falls under 1/2 (x farther than half the radius of curvature
      * on the concave side), or where the steps do not settle or wander
      * farther than x's distance from the front plus a segment, the
      * nearest point stays: crowns that reach so far have no continuous
@@ -231,14 +340,13 @@ namespace xcrack
       const auto g = [&](const double s, const Tensor<2, dim> &R) {
         return (x - position_at(s, hint)) * R[2];
       };
-      const Tensor<1, dim> xl = projection.R * (x - projection.foot);
-      double       slope = -(1 + xl[0] * (projection.dR[0] * projection.R[2]) +
-                       xl[1] * (projection.dR[1] * projection.R[2]));
-      double       s_old = projection.s;
-      double       g_old = g(s_old, projection.R);
-      double       s     = s_old;
-      const double tolerance = 1e-14 * length;
-      bool         converged = (g_old == 0);
+      const Tensor<1, dim> xl        = projection.R * (x - projection.foot);
+      double               slope     = -projection.jacobian_s(xl);
+      double               s_old     = projection.s;
+      double               g_old     = g(s_old, projection.R);
+      double               s         = s_old;
+      const double         tolerance = 1e-14 * length;
+      bool                 converged = (g_old == 0);
       for (unsigned int iteration = 0; iteration < 20 && !converged;
            ++iteration)
         {
@@ -266,17 +374,18 @@ namespace xcrack
       if (closed)
         s -= length * std::floor(s / length);
       Projection foot;
-      foot.s                  = s;
-      foot.foot               = position_at(s, hint);
-      foot.R                  = frame_at(s, hint);
-      foot.dR                 = frame_derivative(s, hint);
-      const Tensor<1, dim> yl = foot.R * (x - foot.foot);
-      const double         h_s =
-        1 + yl[0] * (foot.dR[0] * foot.R[2]) + yl[1] * (foot.dR[1] * foot.R[2]);
-      if (h_s < 0.5)
+      foot.s       = s;
+      foot.segment = hint;
+      foot.kind    = Projection::Kind::normal_plane;
+      foot.foot    = position_at(s, hint);
+      foot.R       = frame_at(s, hint);
+      foot.dR      = frame_derivative(s, hint);
+      if (foot.jacobian_s(foot.R * (x - foot.foot)) < 0.5)
         return;
       foot.at_end = !closed && (s <= 0 || s >= length) &&
                     std::abs(g(s, foot.R)) > 1e-12 * length;
+      if (foot.at_end)
+        foot.kind = Projection::Kind::nearest_at_vertex;
       projection = foot;
     }
 
