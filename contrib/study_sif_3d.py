@@ -8,6 +8,7 @@ each front basis, and the cost and gain of each choice of the extraction
     /usr/bin/python3 contrib/study_sif_3d.py convergence [--meshes 6] [--direct]
     /usr/bin/python3 contrib/study_sif_3d.py bases [--meshes 6] [--jobs 2]
     /usr/bin/python3 contrib/study_sif_3d.py trade [--meshes 6] [--jobs 2]
+    /usr/bin/python3 contrib/study_sif_3d.py rules [--meshes 6] [--jobs 2]
 
 Prints markdown tables (doc/verification.md, doc/performance.md);
 `convergence` also writes doc/figures/sif_convergence_3d.png, `bases`
@@ -19,9 +20,13 @@ rate against the front cell size h). `trade`: on the penny's last mesh,
 one knob at a time against the shipped choice (crowns 2-4 cells, Legendre
 degree 5, 6 tip quadrature points): the crowns (their independence: the
 front-averaged K_I against the baseline's), the basis and its size, the
-tip rule, the near-front rule; with the wall time of the extraction. `--jobs 2` runs two
-choices at once (one core each); the times are then those of a loaded
-machine, compared with the baseline run under the same load.
+tip rule, the near-front rule; with the wall time of the extraction.
+`rules`: on both pennies' last mesh, the near-front cells' rule (tip rule,
+Gauss 6^3, graded by tolerance) against the K's change from a reference
+quadrature, with the wall times of the assembly and the extraction.
+`--jobs 2` runs two choices at once (one core each); the times are then
+those of a loaded machine, compared with the baseline run under the same
+load.
 """
 import argparse
 import concurrent.futures
@@ -235,16 +240,67 @@ def trade(args):
               f"{t / t0:.2f} |")
 
 
+def front_ks(work, rows):
+    """(K_I, K_II, K_III) at the points of the last front file of a run."""
+    with open(os.path.join(work, "out", front_file(rows[-1], len(rows)))) as f:
+        return [tuple(float(r[k]) for k in ("K_I", "K_II", "K_III"))
+                for r in csv.DictReader(f)]
+
+
+def rules(args):
+    """The near-front cells' rule against the K it gives and its cost: on
+    the last mesh of each penny, the tip rule (the shipped rule up to commit
+    dc87695), the tip rule with 10 points everywhere (the quadrature
+    reference), Gauss 6^3, and graded Gauss rules by tolerance. 'quadrature error': the largest change of any K along the
+    front against the reference rule, over the largest |K| there."""
+    tip = "  set Near-front quadrature tolerance = 0\n"
+    choices = [("tip rule, 6 points", tip),
+               ("tip rule, 10 points (reference)",
+                tip + "  set Tip quadrature points = 10\n"),
+               ("Gauss 6^3", "  set Near-front quadrature points = 6\n")] + [
+        (f"graded, tolerance {t:g}" + (" (shipped)" if t == 1e-6 else ""),
+         f"  set Near-front quadrature tolerance = {t:g}\n")
+        for t in (1e-2, 1e-3, 1e-4, 1e-6)]
+    for benchmark in ("sif_penny_3d.prm", "sif_penny_shear_3d.prm"):
+        def one(choice):
+            label, enrichment = choice
+            with tempfile.TemporaryDirectory() as work:
+                rows = run(benchmark, args.meshes, work, enrichment=enrichment,
+                           extra=DIRECT)
+                return label, (rows, front_ks(work, rows))
+        with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+            results = dict(pool.map(one, choices))
+        reference = results[choices[1][0]][1]
+        k_scale = max(abs(v) for k in reference for v in k)
+        last = results[choices[0][0]][0][-1]
+        print(f"\n{benchmark}, mesh {last['mesh']}: {last['dofs']} DoFs; "
+              f"{args.jobs} run(s) at once\n")
+        print("| near-front rule | K_I error | K_II error | K_III error | "
+              "quadrature error | t_assemble (s) | t_K (s) |")
+        print("|---|---|---|---|---|---|---|")
+        for label, _ in choices:
+            rows, ks = results[label]
+            last = rows[-1]
+            change = max(abs(a - b) for k, r in zip(ks, reference)
+                         for a, b in zip(k, r)) / k_scale
+            print(f"| {label} | {float(last['K_I_error']):.2e} | "
+                  f"{float(last['K_II_error']):.2e} | "
+                  f"{float(last['K_III_error']):.2e} | {change:.1e} | "
+                  f"{float(last['t_assemble']):.1f} | "
+                  f"{float(last['t_fracture']):.1f} |")
+
+
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("study", choices=["convergence", "bases", "trade"])
+    parser.add_argument("study", choices=["convergence", "bases", "trade",
+                                          "rules"])
     parser.add_argument("--meshes", type=int, default=6)
     parser.add_argument("--jobs", type=int, default=1)
     parser.add_argument("--direct", action="store_true",
                         help="convergence: no gathering, direct solver")
     args = parser.parse_args()
-    {"convergence": convergence, "bases": bases, "trade": trade}[args.study](
-        args)
+    {"convergence": convergence, "bases": bases, "trade": trade,
+     "rules": rules}[args.study](args)
 
 
 if __name__ == "__main__":

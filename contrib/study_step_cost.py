@@ -10,6 +10,7 @@ goes hits both).
     mkdir -p /tmp/baseline && cp build/release/xcrack build/release/libxcrack_core.so* /tmp/baseline/
     # after it:
     /usr/bin/python3 contrib/study_step_cost.py --baseline /tmp/baseline [--runs 3] [--meshes 5] [--ranks 1]
+        [--variant LABEL SECTION/ENTRY=VALUE ...]   # the current build with an entry changed
 
 Prints a markdown table of the medians of each phase on the last mesh, with
 the ratio baseline / current, and the K errors of both (the same problem
@@ -28,14 +29,16 @@ PHASES = [("t_setup", "setup"), ("t_assemble", "assembly"),
           ("t_solve", "solve"), ("t_fracture", "K extraction")]
 
 
-def run(binary, meshes, ranks, work):
+def run(binary, meshes, ranks, work, extra=""):
     """The last statistics row of the penny on `meshes` meshes with the
-    xcrack at `binary` (None: the current build)."""
+    xcrack at `binary` (None: the current build), `extra` parameter text
+    added."""
     text = (f"include {os.path.join(xcrack_runs.top, 'prm', 'benchmarks', 'sif_penny_3d.prm')}\n"
             f"set Output directory = {os.path.join(work, 'out')}\n"
             "subsection Output\n  set Timing summary = false\nend\n"
             "subsection Linear solver\n  set Type = direct\nend\n"
-            f"subsection Mesh refinement\n  set Number of meshes = {meshes}\nend\n")
+            f"subsection Mesh refinement\n  set Number of meshes = {meshes}\nend\n"
+            + extra)
     return xcrack_runs.run_xcrack(
         text, work, ranks,
         binary=os.path.join(binary, "xcrack") if binary else None)[-1]
@@ -48,16 +51,27 @@ def main():
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--meshes", type=int, default=5)
     parser.add_argument("--ranks", type=int, default=1)
+    parser.add_argument("--variant", nargs=2, action="append", default=[],
+                        metavar=("LABEL", "SECTION/ENTRY=VALUE"),
+                        help="also run the current build with one entry "
+                        "changed, e.g. --variant 'tip rule near the front' "
+                        "'Enrichment/Near-front quadrature tolerance=0'")
     args = parser.parse_args()
 
-    builds = [("current", None)]
+    builds = [("current", None, "")]
     if args.baseline:
-        builds.insert(0, ("baseline", os.path.abspath(args.baseline)))
-    rows = {label: [] for label, _ in builds}
+        builds.insert(0, ("baseline", os.path.abspath(args.baseline), ""))
+    for label, setting in args.variant:
+        entry, value = setting.split("=", 1)
+        section, name = entry.rsplit("/", 1)
+        builds.insert(-1, (label, None, f"subsection {section}\n"
+                           f"  set {name} = {value}\nend\n"))
+    rows = {label: [] for label, _, _ in builds}
     with tempfile.TemporaryDirectory() as work:
         for i in range(args.runs):
-            for label, binary in builds:
-                rows[label].append(run(binary, args.meshes, args.ranks, work))
+            for label, binary, extra in builds:
+                rows[label].append(run(binary, args.meshes, args.ranks, work,
+                                       extra))
                 print(f"run {i + 1} {label}: "
                       + ", ".join(f"{name} {float(rows[label][-1][key]):.2f} s"
                                   for key, name in PHASES), file=sys.stderr)
@@ -66,25 +80,25 @@ def main():
     print(f"\nPenny, mesh {last['mesh']}: {int(last['dofs']):,} DoFs "
           f"({int(last['enriched_dofs']):,} enriched), {args.ranks} rank(s), "
           f"median of {args.runs} runs (seconds)\n")
-    header = "| phase |" + "".join(f" {label} |" for label, _ in builds)
+    header = "| phase |" + "".join(f" {label} |" for label, _, _ in builds)
     if args.baseline:
         header += " baseline / current |"
     print(header)
     print("|---" * (header.count("|") - 1) + "|")
     for key, name in PHASES + [(None, "setup + assembly + K")]:
         medians = {}
-        for label, _ in builds:
+        for label, _, _ in builds:
             values = [sum(float(r[k]) for k in ("t_setup", "t_assemble",
                                                  "t_fracture"))
                       if key is None else float(r[key]) for r in rows[label]]
             medians[label] = statistics.median(values)
         line = f"| {name} |" + "".join(f" {medians[label]:.2f} |"
-                                       for label, _ in builds)
+                                       for label, _, _ in builds)
         if args.baseline:
             line += f" {medians['baseline'] / medians['current']:.2f} |"
         print(line)
     print()
-    for label, _ in builds:
+    for label, _, _ in builds:
         print(f"{label}: {xcrack_runs.k_errors(rows[label][-1], 3)}")
 
 

@@ -149,17 +149,33 @@ namespace xcrack
     assemble_system();
 
     /**
+     * The FEValues of the cells with rules of their own
+     * (reinit_fe_values()): one rebuilt for each cell whose rule is its
+     * own, and one kept per element and shared rule
+     * (Enrichment::is_shared_rule(): the Gauss rules of the cells near the
+     * front), whose construction would otherwise cost as much as their
+     * integration.
+     */
+    struct SpecialFEValues
+    {
+      std::unique_ptr<FEValues<dim>> per_cell;
+      std::map<std::pair<const Quadrature<dim> *, unsigned int>,
+               std::unique_ptr<FEValues<dim>>>
+        shared;
+    };
+
+    /**
      * Reinitialise on @p cell and return the FEValues to integrate with:
-     * @p hp_fe_values for cells integrated by a Gauss rule, or
+     * @p hp_fe_values for cells integrated by a Gauss rule, or one of
      * @p special_values built with the rule Enrichment::special_quadrature()
      * gives for the cells a crack splits or whose front is near (at least
      * @p n_points_1d points per direction).
      */
     const FEValues<dim> &
     reinit_fe_values(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                     hp::FEValues<dim>              &hp_fe_values,
-                     std::unique_ptr<FEValues<dim>> &special_values,
-                     const unsigned int              n_points_1d) const;
+                     hp::FEValues<dim> &hp_fe_values,
+                     SpecialFEValues   &special_values,
+                     const unsigned int n_points_1d) const;
 
     /**
      * Add the work of the lip pressure in @p cell to @p cell_rhs: the

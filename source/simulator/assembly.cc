@@ -16,19 +16,24 @@ namespace xcrack
   Simulator<dim>::reinit_fe_values(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     hp::FEValues<dim>                                    &hp_fe_values,
-    std::unique_ptr<FEValues<dim>>                       &special_values,
+    SpecialFEValues                                      &special_values,
     const unsigned int                                    n_points_1d) const
   {
     if (const Quadrature<dim> *rule =
           (enrichment ? enrichment->special_quadrature(cell, n_points_1d) :
                         nullptr))
       {
-        special_values =
-          std::make_unique<FEValues<dim>>(cell->get_fe(),
-                                          *rule,
-                                          hp_fe_values.get_update_flags());
-        special_values->reinit(cell);
-        return *special_values;
+        const bool shared = enrichment->is_shared_rule(rule);
+        std::unique_ptr<FEValues<dim>> &values =
+          (shared ? special_values.shared[{rule, cell->active_fe_index()}] :
+                    special_values.per_cell);
+        if (!shared || !values)
+          values =
+            std::make_unique<FEValues<dim>>(cell->get_fe(),
+                                            *rule,
+                                            hp_fe_values.get_update_flags());
+        values->reinit(cell);
+        return *values;
       }
     hp_fe_values.reinit(cell);
     return hp_fe_values.get_present_fe_values();
@@ -63,7 +68,7 @@ namespace xcrack
     std::vector<types::global_dof_index> local_dof_indices;
     ElasticCellMatrix<dim>               stiffness;
     std::vector<Vector<double>>          load;
-    std::unique_ptr<FEValues<dim>>       special_values;
+    SpecialFEValues                      special_values;
     // The first load that is not finite where it is used, on this rank.
     std::string culprit;
     const auto  check = [&culprit](const std::vector<Vector<double>> &values,

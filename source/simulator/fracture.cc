@@ -32,12 +32,12 @@ namespace xcrack
 
     // No shape values: the integrals and the estimate read gradients only
     // (FE_Enriched's tables for a tip rule of 750 points are large).
-    hp::FEValues<dim>              hp_fe_values(fe_collection,
+    hp::FEValues<dim> hp_fe_values(fe_collection,
                                    quadrature_collection,
                                    update_gradients | update_quadrature_points |
                                      update_JxW_values |
                                      update_inverse_jacobians);
-    std::unique_ptr<FEValues<dim>> special_values;
+    SpecialFEValues   special_values;
     const auto fe_values_of = [&](const auto &cell) -> const FEValues<dim> & {
       return reinit_fe_values(cell, hp_fe_values, special_values, degree + 1);
     };

@@ -41,7 +41,7 @@ namespace xcrack
     std::vector<SymmetricTensor<2, dim>>     eps_h;
     std::vector<Vector<double>>              u;
     std::vector<std::vector<Tensor<1, dim>>> grad_u;
-    std::unique_ptr<FEValues<dim>>           special_values;
+    SpecialFEValues                          special_values;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())

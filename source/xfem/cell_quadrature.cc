@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace xcrack
@@ -681,6 +682,100 @@ namespace xcrack
 
 
     template <int dim>
+    double
+    front_distance(const std::vector<double> &lsn,
+                   const std::vector<double> &lst)
+    {
+      // The interpolants linear about the centre c: lsn ~ ln + a . (x - c),
+      // lst ~ lt + b . (x - c), in reference coordinates.
+      static const FE_Q<dim> q1(1);
+      Point<dim>             c;
+      for (unsigned int d = 0; d < dim; ++d)
+        c[d] = 0.5;
+      double         ln = 0, lt = 0;
+      Tensor<1, dim> a, b;
+      for (unsigned int i = 0; i < GeometryInfo<dim>::vertices_per_cell; ++i)
+        {
+          ln += lsn[i] * q1.shape_value(i, c);
+          lt += lst[i] * q1.shape_value(i, c);
+          a += lsn[i] * q1.shape_grad(i, c);
+          b += lst[i] * q1.shape_grad(i, c);
+        }
+      // The front: the point of both zero sets nearest to c (a point in
+      // 2D, a line along a x b in 3D); the Gram matrix of a and b gives it.
+      const double aa = a * a, ab = a * b, bb = b * b;
+      const double det = aa * bb - ab * ab;
+      if (!(det > 1e-24 * aa * bb))
+        return std::numeric_limits<double>::infinity();
+      const double     alpha     = (-ln * bb + lt * ab) / det;
+      const double     beta      = (-lt * aa + ln * ab) / det;
+      const Point<dim> p         = c + alpha * a + beta * b;
+      const auto       onto_cell = [](Point<dim> x) {
+        for (unsigned int d = 0; d < dim; ++d)
+          x[d] = std::clamp(x[d], 0., 1.);
+        return x;
+      };
+      if constexpr (dim == 2)
+        return p.distance(onto_cell(p));
+      else
+        {
+          // The distance from a point of the line to the cell is convex
+          // along the line: a golden-section search over the stretch that
+          // passes within the cell's reach of c.
+          Tensor<1, dim> t = cross_product_3d(a, b);
+          t /= t.norm();
+          const auto gap = [&](const double u) {
+            const Point<dim> x = p + u * t;
+            return x.distance(onto_cell(x));
+          };
+          const double reach = (p - c) * t;
+          double       lo = -reach - 1, hi = -reach + 1;
+          const double golden = 0.5 * (std::sqrt(5.) - 1);
+          double u1 = hi - golden * (hi - lo), u2 = lo + golden * (hi - lo);
+          double g1 = gap(u1), g2 = gap(u2);
+          for (unsigned int iteration = 0; iteration < 60; ++iteration)
+            if (g1 < g2)
+              {
+                hi = u2;
+                u2 = u1;
+                g2 = g1;
+                u1 = hi - golden * (hi - lo);
+                g1 = gap(u1);
+              }
+            else
+              {
+                lo = u1;
+                u1 = u2;
+                g1 = g2;
+                u2 = lo + golden * (hi - lo);
+                g2 = gap(u2);
+              }
+          return std::min(g1, g2);
+        }
+    }
+
+
+
+    unsigned int
+    graded_gauss_points(const double distance, const double tolerance)
+    {
+      if (!(distance > 0))
+        return std::numeric_limits<unsigned int>::max();
+      // The Bernstein ellipse of [0, 1] through a point at this distance
+      // from its midpoint, off the real axis: the worst place for the
+      // singularity of a line of the tensor rule (beside the middle of a
+      // face, not beyond a corner).
+      const double rho =
+        2 * distance + std::sqrt(1 + 4 * distance * distance);
+      const double n   = std::log(1 / tolerance) / (2 * std::log(rho));
+      if (n > 1000)
+        return std::numeric_limits<unsigned int>::max();
+      return std::max(1u, static_cast<unsigned int>(std::ceil(n)));
+    }
+
+
+
+    template <int dim>
     std::vector<Point<dim>>
     front_points(const std::vector<double> &lsn, const std::vector<double> &lst)
     {
@@ -708,6 +803,10 @@ namespace xcrack
 
 
 
+    template double
+    front_distance<2>(const std::vector<double> &, const std::vector<double> &);
+    template double
+    front_distance<3>(const std::vector<double> &, const std::vector<double> &);
     template std::vector<Point<2>>
     front_points<2>(const std::vector<double> &, const std::vector<double> &);
     template std::vector<Point<3>>

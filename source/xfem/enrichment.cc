@@ -106,11 +106,22 @@ namespace xcrack
         "0",
         Patterns::Integer(0, 20),
         "Cells within a cell diameter of the front that it does not touch "
-        "and that carry the branch functions alone: 0 integrates them with "
-        "the tip rule (its fan from the nearest front point, several hundred "
-        "points per cell in 3D); n > 0 with n^dim Gauss points, cheaper, "
-        "less accurate where the front passes close to the cell (the trade "
-        "is measured in doc/performance.md).");
+        "and that carry the branch functions alone: n > 0 integrates them "
+        "with n^dim Gauss points each; 0 lets Near-front quadrature "
+        "tolerance choose.");
+      prm.declare_entry(
+        "Near-front quadrature tolerance",
+        "1e-6",
+        Patterns::Double(0, 1),
+        "Those cells (unless Near-front quadrature points > 0): a Gauss rule "
+        "per cell whose order follows the cell's distance d from the front, "
+        "enough for this relative error on integrands singular there "
+        "(log(1/tolerance) / (2 log(rho)) points per direction, rho = 2 d + "
+        "sqrt(1 + 4 d^2), d in cell widths), or the tip rule where that "
+        "would take more points than the tip rule has. 0: the tip rule in "
+        "all of them (its fan from the nearest front point, several hundred "
+        "points per cell in 3D). The trade is measured in "
+        "doc/performance.md.");
       prm.declare_entry(
         "Gather tip DoFs",
         "false",
@@ -151,6 +162,8 @@ namespace xcrack
     tip_quadrature_points      = prm.get_integer("Tip quadrature points");
     near_front_quadrature_points =
       prm.get_integer("Near-front quadrature points");
+    near_front_quadrature_tolerance =
+      prm.get_double("Near-front quadrature tolerance");
     gather         = prm.get_bool("Gather tip DoFs");
     gather_segment = prm.get_double("Gather segment length");
     prm.leave_subsection();
@@ -758,6 +771,7 @@ namespace xcrack
         vertex_lst[c] = fields.vertex_values(c, false);
       }
     special_rules.clear();
+    cell_rules.clear();
     cell_kind.assign(tria.n_active_cells(), CellKind::plain);
     near_front.assign(tria.n_active_cells(), false);
     cell_crack.assign(tria.n_active_cells(), 0);

@@ -5,6 +5,7 @@
 // rules change.
 
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
 
 #include <xcrack/xfem/cell_quadrature.h>
 #include <xcrack/xfem/enrichment.h>
@@ -26,37 +27,77 @@ namespace xcrack
     // Split cells with branch functions integrate them as finely as tip
     // cells: a low-order rule would leave their many DoFs underintegrated
     // (spurious zero-energy modes). Cells near the front that it does not
-    // touch and that carry the branch functions alone may take a Gauss
-    // rule (Near-front quadrature points): their integrands are smooth, if
-    // steep where the front passes close.
-    const bool gauss_near = kind == CellKind::plain &&
-                            cell->active_fe_index() == tip &&
-                            parameters.near_front_quadrature_points > 0;
+    // touch and that carry the branch functions alone take a Gauss rule:
+    // their integrands are analytic, if steep where the front passes
+    // close. Its order is fixed (Near-front quadrature points) or follows
+    // the cell's distance from the front (Near-front quadrature tolerance),
+    // with the tip rule where that is the cheaper of the two.
+    const bool branch_near =
+      kind == CellKind::plain && cell->active_fe_index() == tip;
+    const bool gauss_near =
+      branch_near && parameters.near_front_quadrature_points > 0;
+    const bool graded = branch_near && !gauss_near &&
+                        parameters.near_front_quadrature_tolerance > 0;
     const unsigned int n =
       (gauss_near ?
          std::max(n_points_1d, parameters.near_front_quadrature_points) :
        kind == CellKind::tip || near || cell->active_fe_index() >= tip ?
          std::max(n_points_1d, parameters.tip_quadrature_points) :
          n_points_1d);
-    // The cache key combines cell and order: assembly and error evaluation
-    // use different orders on the same cells.
-    const unsigned int key = cell->active_cell_index() * 32 + n;
+    // The cache key combines cell and requested order: assembly and error
+    // evaluation use different orders on the same cells.
+    const unsigned int key = cell->active_cell_index() * 32 + n_points_1d;
     const auto         it  = special_rules.find(key);
     if (it != special_rules.end())
-      return &it->second;
+      return it->second;
 
+    // Gauss rules are shared between the cells (and their FEValues with
+    // them, is_shared_rule()).
+    const auto gauss = [&](const unsigned int order) {
+      return &gauss_rules.try_emplace(order, order).first->second;
+    };
+    const auto own = [&](Quadrature<dim> &&rule) {
+      return &cell_rules.emplace(key, std::move(rule)).first->second;
+    };
     const unsigned int        c   = crack_index(cell);
     const std::vector<double> lsn = vertex_values(cell, c, true);
-    Quadrature<dim>           rule;
+    const Quadrature<dim>    *rule;
     if (gauss_near)
-      rule = QGauss<dim>(n);
+      rule = gauss(n);
     else if (kind == CellKind::split && !near)
-      rule = CellQuadrature::cut_cell_rule<dim>(lsn, n).first;
+      rule = own(CellQuadrature::cut_cell_rule<dim>(lsn, n).first);
     else
-      rule = CellQuadrature::tip_cell_rule<dim>(lsn,
-                                                vertex_values(cell, c, false),
-                                                n);
-    return &special_rules.emplace(key, std::move(rule)).first->second;
+      {
+        const std::vector<double> lst = vertex_values(cell, c, false);
+        Quadrature<dim>           tip_rule =
+          CellQuadrature::tip_cell_rule<dim>(lsn, lst, n);
+        // The graded Gauss rule where it is the smaller of the two.
+        unsigned int n_graded = numbers::invalid_unsigned_int;
+        if (graded)
+          n_graded = std::max(n_points_1d,
+                              CellQuadrature::graded_gauss_points(
+                                CellQuadrature::front_distance<dim>(lsn, lst),
+                                parameters.near_front_quadrature_tolerance));
+        if (n_graded < 32 &&
+            Utilities::fixed_power<dim>(n_graded) < tip_rule.size())
+          rule = gauss(n_graded);
+        else
+          rule = own(std::move(tip_rule));
+      }
+    special_rules.emplace(key, rule);
+    return rule;
+  }
+
+
+
+  template <int dim>
+  bool
+  Enrichment<dim>::is_shared_rule(const Quadrature<dim> *rule) const
+  {
+    for (const auto &[order, gauss] : gauss_rules)
+      if (rule == &gauss)
+        return true;
+    return false;
   }
 
 
@@ -96,6 +137,10 @@ namespace xcrack
   template const Quadrature<3> *
   Enrichment<3>::special_quadrature(const DoFHandler<3>::active_cell_iterator &,
                                     const unsigned int) const;
+  template bool
+  Enrichment<2>::is_shared_rule(const Quadrature<2> *) const;
+  template bool
+  Enrichment<3>::is_shared_rule(const Quadrature<3> *) const;
   template NonMatching::ImmersedSurfaceQuadrature<2>
   Enrichment<2>::lip_quadrature(
     const DoFHandler<2>::active_cell_iterator &) const;

@@ -166,6 +166,35 @@ namespace xcrack
     tip_cell_rule(const std::vector<double> &lsn,
                   const std::vector<double> &lst,
                   const unsigned int         n_points_1d);
+
+    /**
+     * The distance, in reference coordinates (the cell's width 1), from the
+     * reference cell to the crack front {lsn = 0, lst = 0}, for a cell the
+     * front does not touch and the crack does not cut: where the branch
+     * functions and their products stop being analytic (the lips behind
+     * the front are no obstacle: a function of the half angle that is
+     * smooth in the cell continues analytically around them, up to the
+     * front). The level sets are taken linear about the cell's centre (the
+     * front a line there). Infinite where their gradients are parallel.
+     */
+    template <int dim>
+    double
+    front_distance(const std::vector<double> &lsn,
+                   const std::vector<double> &lst);
+
+    /**
+     * The number of Gauss points per direction with which the integrands
+     * of the branch functions (their gradients ~ 1/sqrt(r), products ~ 1/r)
+     * reach the relative error @p tolerance in a cell at reference
+     * distance @p distance from the front (front_distance()). Gauss on
+     * [0, 1] converges like rho^(-2n) for a function analytic inside the
+     * Bernstein ellipse of parameter rho; along a line of the tensor rule
+     * the front is a complex singularity at about that distance from the
+     * line, at worst beside its midpoint: rho = 2 d + sqrt(1 + 4 d^2).
+     * (tests/near_front_rule checks the tolerance is met.)
+     */
+    unsigned int
+    graded_gauss_points(const double distance, const double tolerance);
   } // namespace CellQuadrature
 } // namespace xcrack
 

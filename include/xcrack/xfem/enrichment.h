@@ -4,6 +4,7 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/quadrature.h>
+#include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/hp/fe_collection.h>
@@ -79,9 +80,12 @@ namespace xcrack
     double       radius                = 0;
     unsigned int tip_quadrature_points = 6;
     /// Gauss points per direction in the branch-only cells near the front
-    /// that it does not touch (0: the tip rule there too).
+    /// that it does not touch (0: graded by the tolerance below).
     unsigned int near_front_quadrature_points = 0;
-    bool         gather                       = false;
+    /// Those cells with Gauss rules graded by their distance from the
+    /// front, for this relative error (0: the tip rule there too).
+    double near_front_quadrature_tolerance = 1e-6;
+    bool   gather                          = false;
     /// Gathering: master spacing along a 3D front, in multiples of the
     /// largest tip cell's diameter.
     double gather_segment = 2;
@@ -311,13 +315,24 @@ namespace xcrack
      * nullptr for a cell a Gauss rule integrates. Split cells: exact for
      * polynomials of degree 2 @p n_points_1d - 1 on each side of the crack.
      * Tip cells and cells within a diameter of the front: the fan rule with
-     * at least `Tip quadrature points` points per direction. Built on first use
-     * and cached until the next set_fe_indices().
+     * at least `Tip quadrature points` points per direction, or for those
+     * of the latter that carry the branch functions alone a Gauss rule
+     * (`Near-front quadrature points`, `Near-front quadrature tolerance`).
+     * Built on first use and cached until the next set_fe_indices().
      */
     const Quadrature<dim> *
     special_quadrature(
       const typename DoFHandler<dim>::active_cell_iterator &cell,
       const unsigned int                                    n_points_1d) const;
+
+    /**
+     * Whether @p rule, a rule special_quadrature() returned, is one that
+     * several cells share (a Gauss rule of the cells near the front): the
+     * FEValues of such a rule are worth keeping for the next cell with the
+     * same element.
+     */
+    bool
+    is_shared_rule(const Quadrature<dim> *rule) const;
 
     /**
      * The rule on the lips inside @p cell (reference coordinates, normals
@@ -447,9 +462,13 @@ namespace xcrack
     std::vector<bool> near_front;
     /// Whether the functions of each vertex are enriched by H, by F1..F4
     /// (vertices of the owned and ghost cells).
-    std::vector<bool>                               heaviside_vertex;
-    std::vector<bool>                               tip_vertex;
-    mutable std::map<unsigned int, Quadrature<dim>> special_rules;
+    std::vector<bool> heaviside_vertex;
+    std::vector<bool> tip_vertex;
+    /// The rules of special_quadrature(), per cell and order: the cell's
+    /// own (cell_rules) or one of the shared Gauss rules (by order).
+    mutable std::map<unsigned int, const Quadrature<dim> *> special_rules;
+    mutable std::map<unsigned int, Quadrature<dim>>         cell_rules;
+    mutable std::map<unsigned int, QGauss<dim>>             gauss_rules;
   };
 } // namespace xcrack
 
