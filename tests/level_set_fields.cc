@@ -7,7 +7,10 @@
 //   of a straight 2D crack (linear level sets) stay exact at every vertex,
 //   the new ones included;
 // - stored with the mesh (Triangulation::save) and read back onto the
-//   coarse mesh (load), they are bit for bit the fields that were saved.
+//   coarse mesh (load), they are bit for bit the fields that were saved;
+// - where the crack passes through vertices (and its tip lies on one) the
+//   fields are exactly zero, not the round-off of the shape's geometry,
+//   whose sign would decide how the cells around are classified.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -196,6 +199,49 @@ check_transfer_and_checkpoint()
           << std::endl;
 }
 
+void
+check_round_off_zeros()
+{
+  // Along y = x / 3 from (-0.75, -0.25) to the tip (0.375, 0.125), on a
+  // mesh of h = 1/8: the line passes through the vertices with x a multiple
+  // of 3/8, and the normal through the tip, 3 x + y = 5/4, through others:
+  // all exact binary numbers, as are both equations there.
+  const CrackSet<2> cracks =
+    make_cracks<2>("  set Start point = -0.75, -0.25\n  set End point = "
+                   "0.375, 0.125\n  set Tips = end\n");
+  parallel::distributed::Triangulation<2> tria(MPI_COMM_WORLD);
+  GridGenerator::subdivided_hyper_cube(tria, 16, -1, 1);
+  LevelSetFields<2> fields(tria);
+  fields.initialize(cracks.shapes());
+  const std::vector<double> lsn   = fields.vertex_values(0, true);
+  const std::vector<double> lst   = fields.vertex_values(0, false);
+  bool                      zeros = true, others = true;
+  unsigned int              n_on_line = 0;
+  for (const auto &cell : tria.active_cell_iterators())
+    if (cell->is_locally_owned())
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          const Point<2> &x       = cell->vertex(v);
+          const bool      on_line = (3 * x[1] == x[0]);
+          // lst vanishes on the normal to the crack through its tip.
+          const bool   at_tip = (3 * x[0] + x[1] == 1.25);
+          const double value  = lsn[cell->vertex_index(v)];
+          const double along  = lst[cell->vertex_index(v)];
+          zeros  = zeros && (!on_line || value == 0) && (!at_tip || along == 0);
+          others = others && (on_line || value != 0) && (at_tip || along != 0);
+          // Each vertex counted once: by the cell it is vertex 0 of.
+          n_on_line += (on_line && v == 0 && x[0] <= 0.375 && x[0] >= -0.75);
+        }
+  logfile << "Crack along y = x / 3 through "
+          << Utilities::MPI::sum(n_on_line, MPI_COMM_WORLD)
+          << " vertices, its tip on one: lsn exactly zero on the line and "
+             "lst on the normal through the tip: "
+          << yes(!Utilities::MPI::logical_or(!zeros, MPI_COMM_WORLD))
+          << "; nonzero elsewhere: "
+          << yes(!Utilities::MPI::logical_or(!others, MPI_COMM_WORLD))
+          << std::endl;
+}
+
 int
 main(int argc, char **argv)
 {
@@ -204,4 +250,5 @@ main(int argc, char **argv)
     logfile.open("output");
   check_penny();
   check_transfer_and_checkpoint();
+  check_round_off_zeros();
 }

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace xcrack
 {
@@ -76,9 +77,39 @@ namespace xcrack
 
   template <int dim>
   void
-  LevelSetFields<dim>::set_all(
-    const std::vector<TrilinosWrappers::MPI::Vector> &owned)
+  LevelSetFields<dim>::zero_round_off(
+    TrilinosWrappers::MPI::Vector &owned) const
   {
+    // The shortest edge at each locally relevant vertex DoF: the owned and
+    // ghost cells hold every cell around an owned vertex.
+    std::map<types::global_dof_index, double> edge;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const auto dof = cell->vertex_dof_index(v, 0);
+            if (!owned.locally_owned_elements().is_element(dof))
+              continue;
+            const double h            = cell->minimum_vertex_distance();
+            const auto [it, inserted] = edge.emplace(dof, h);
+            if (!inserted)
+              it->second = std::min(it->second, h);
+          }
+    for (const auto &[dof, h] : edge)
+      if (owned[dof] != 0 && std::abs(owned[dof]) <= 1e-10 * h)
+        owned[dof] = 0;
+    owned.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  void
+  LevelSetFields<dim>::set_all(
+    std::vector<TrilinosWrappers::MPI::Vector> &owned)
+  {
+    for (auto &field : owned)
+      zero_round_off(field);
     const unsigned int n = owned.size() / 2;
     normal.resize(n);
     tangent.resize(n);
@@ -187,8 +218,15 @@ namespace xcrack
                            const TrilinosWrappers::MPI::Vector &new_lst)
   {
     AssertIndexRange(crack, normal.size());
-    normal[crack]  = new_lsn;
-    tangent[crack] = new_lst;
+    TrilinosWrappers::MPI::Vector owned_lsn, owned_lst;
+    reinit_vector(owned_lsn, false);
+    reinit_vector(owned_lst, false);
+    owned_lsn = new_lsn;
+    owned_lst = new_lst;
+    zero_round_off(owned_lsn);
+    zero_round_off(owned_lst);
+    normal[crack]  = owned_lsn;
+    tangent[crack] = owned_lst;
   }
 
 

@@ -127,9 +127,24 @@ namespace xcrack
     std::vector<const TrilinosWrappers::MPI::Vector *>
     all_fields() const;
 
-    /// Rebuild the ghosted fields from @p owned (all lsn, then all lst).
+    /// Rebuild the ghosted fields from @p owned (all lsn, then all lst),
+    /// their round-off zeros made exact first (zero_round_off()).
     void
-    set_all(const std::vector<TrilinosWrappers::MPI::Vector> &owned);
+    set_all(std::vector<TrilinosWrappers::MPI::Vector> &owned);
+
+    /**
+     * Set to zero the values of @p owned (a field, owned entries) within
+     * 1e-10 of the shortest edge at their vertex. A crack whose front or
+     * surface passes through vertices (a tip placed, or grown, onto a mesh
+     * line: a = 10 mm on a 1 mm grid) has there values that are zero up to
+     * the round-off of its geometry, and the sign of that round-off would
+     * decide which cells are cut or hold the front: two mirror tips of one
+     * crack enriched differently, and results that change with the
+     * machine. Exact zeros take the path the classification has for a
+     * surface through a node, the same on every machine.
+     */
+    void
+    zero_round_off(TrilinosWrappers::MPI::Vector &owned) const;
 
     FE_Q<dim>                                  fe;
     DoFHandler<dim>                            dof_handler;
