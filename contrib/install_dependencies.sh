@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake g++ make ccache numdiff
+  libmetis-dev            # METIS: the ordering xcrack hands to MUMPS
   libdeal.ii-dev          # deal.II 9.4.1 with MPI, p4est, Trilinos, PETSc (+ MUMPS)
   openmpi-bin             # mpirun for the parallel tests and runs
   libopenblas0-pthread    # optimised BLAS: MUMPS is 18x faster than with reference BLAS

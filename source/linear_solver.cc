@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
@@ -6,8 +8,12 @@
 #include <xcrack/linear_solver.h>
 
 #include <Amesos_Mumps.h>
+#include <Epetra_CrsMatrix.h>
 #include <Epetra_LinearProblem.h>
+#include <Epetra_MpiComm.h>
 #include <Teuchos_ParameterList.hpp>
+#include <algorithm>
+#include <metis.h>
 #include <stdexcept>
 
 namespace xcrack
@@ -30,14 +36,16 @@ namespace xcrack
                         "conjugate gradients with algebraic multigrid.");
       prm.declare_entry(
         "Direct solver ordering",
-        "auto",
-        Patterns::Selection("auto|pord"),
-        "Fill-reducing ordering of MUMPS. auto: MUMPS's choice (approximate "
-        "minimum degree on the problems measured); pord: nested dissection "
-        "(the MUMPS reached through Amesos here has neither METIS nor "
-        "SCOTCH). On the fifth mesh of sif_penny_3d.prm pord cut the "
-        "factorisation flops by 42 % and the factor by 24 %: worth it for "
-        "large 3D problems, where memory decides what fits.");
+        "metis",
+        Patterns::Selection("metis|auto|pord"),
+        "Fill-reducing ordering of MUMPS. metis: METIS nested dissection of "
+        "the matrix graph, computed by xcrack on the first rank and handed "
+        "to MUMPS (the MUMPS of Debian has neither METIS nor SCOTCH inside); "
+        "auto: MUMPS's own choice (PORD on the 3D problems measured, "
+        "approximate minimum degree on small ones); pord: PORD always. "
+        "metis and PORD give about the same factor; metis orders in a "
+        "fraction of PORD's time, which MUMPS spends on one rank "
+        "(doc/performance.md, \"The ordering of the direct solver\").");
       prm.declare_entry("Relative tolerance",
                         "1e-10",
                         Patterns::Double(0, 1),
@@ -67,6 +75,91 @@ namespace xcrack
 
 
 
+  namespace
+  {
+    /**
+     * METIS nested dissection of the graph of @p matrix, as MUMPS's
+     * PERM_IN (the 1-based position of each row in the pivot order), on
+     * rank 0 of its communicator, MUMPS's host; empty on the other ranks.
+     * The rows' column lists are gathered there: the ordering is a
+     * sequential computation in MUMPS too (its analysis phase), and METIS
+     * does it in a fraction of the time PORD takes.
+     */
+    std::vector<int>
+    metis_ordering(const Epetra_CrsMatrix &matrix)
+    {
+      const MPI_Comm comm =
+        dynamic_cast<const Epetra_MpiComm &>(matrix.Comm()).Comm();
+      // Per owned row: its global index, the number of its off-diagonal
+      // columns, their global indices.
+      std::vector<int> rows;
+      for (int i = 0; i < matrix.NumMyRows(); ++i)
+        {
+          int     n;
+          double *values;
+          int    *columns;
+          matrix.ExtractMyRowView(i, n, values, columns);
+          const int row = matrix.GRID(i);
+          rows.push_back(row);
+          const std::size_t count = rows.size();
+          rows.push_back(0);
+          for (int k = 0; k < n; ++k)
+            if (matrix.GCID(columns[k]) != row)
+              {
+                rows.push_back(matrix.GCID(columns[k]));
+                ++rows[count];
+              }
+        }
+      const std::vector<std::vector<int>> all =
+        dealii::Utilities::MPI::gather(comm, rows, 0);
+      if (dealii::Utilities::MPI::this_mpi_process(comm) != 0)
+        return {};
+
+      // The symmetric adjacency (both directions of every entry: METIS
+      // needs a symmetric graph, and a constrained row may hold only its
+      // diagonal while its column is not empty), in CSR form.
+      const idx_t                     n_rows = matrix.NumGlobalRows();
+      std::vector<std::vector<idx_t>> adjacency(n_rows);
+      for (const std::vector<int> &part : all)
+        for (std::size_t p = 0; p < part.size(); p += 2 + part[p + 1])
+          for (int k = 0; k < part[p + 1]; ++k)
+            {
+              adjacency[part[p]].push_back(part[p + 2 + k]);
+              adjacency[part[p + 2 + k]].push_back(part[p]);
+            }
+      std::vector<idx_t> offsets(n_rows + 1, 0), neighbours;
+      for (idx_t i = 0; i < n_rows; ++i)
+        {
+          std::vector<idx_t> &list = adjacency[i];
+          std::sort(list.begin(), list.end());
+          list.erase(std::unique(list.begin(), list.end()), list.end());
+          neighbours.insert(neighbours.end(), list.begin(), list.end());
+          offsets[i + 1] = neighbours.size();
+          std::vector<idx_t>().swap(list);
+        }
+      std::vector<idx_t> permutation(n_rows), inverse(n_rows);
+      idx_t              options[METIS_NOPTIONS];
+      METIS_SetDefaultOptions(options);
+      idx_t n = n_rows;
+      if (METIS_NodeND(&n,
+                       offsets.data(),
+                       neighbours.data(),
+                       nullptr,
+                       options,
+                       permutation.data(),
+                       inverse.data()) != METIS_OK)
+        throw std::runtime_error("METIS could not order the matrix; use "
+                                 "Linear solver/Direct solver ordering = "
+                                 "auto.");
+      std::vector<int> perm_in(n_rows);
+      for (idx_t i = 0; i < n_rows; ++i)
+        perm_in[i] = inverse[i] + 1;
+      return perm_in;
+    }
+  } // namespace
+
+
+
   void
   LinearSolver::solve_direct(const TrilinosWrappers::SparseMatrix &matrix,
                              TrilinosWrappers::MPI::Vector        &x,
@@ -84,6 +177,10 @@ namespace xcrack
       &x.trilinos_vector(),
       const_cast<Epetra_MultiVector *>(
         static_cast<const Epetra_MultiVector *>(&rhs.trilinos_vector())));
+    // The ordering once: the retries below factorise the same matrix.
+    const std::vector<int> permutation =
+      (ordering == "metis" ? metis_ordering(matrix.trilinos_matrix()) :
+                             std::vector<int>());
     int error = 0, info = 0;
     for (int relaxation = 100; relaxation <= 1600; relaxation *= 2)
       {
@@ -92,6 +189,13 @@ namespace xcrack
         factorization->SetICNTL(4, 0); // MUMPS prints nothing; we report
         if (ordering == "pord")
           factorization->SetICNTL(7, 4);
+        else if (ordering == "metis")
+          {
+            factorization->SetICNTL(7, 1);
+            // MUMPS reads the permutation on its host only.
+            if (!permutation.empty())
+              factorization->SetOrdering(const_cast<int *>(permutation.data()));
+          }
         Teuchos::ParameterList parameters;
         parameters.set("MatrixProperty", "SPD");
         factorization->SetParameters(parameters);

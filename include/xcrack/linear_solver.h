@@ -72,8 +72,9 @@ namespace xcrack
     release();
 
     std::string type = "direct";
-    /// Fill-reducing ordering of the direct solver: "amd" or "pord".
-    std::string  ordering           = "amd";
+    /// Fill-reducing ordering of the direct solver: "metis", "auto" or
+    /// "pord".
+    std::string  ordering           = "metis";
     double       relative_tolerance = 1e-10;
     unsigned int max_iterations     = 2000;
 
