@@ -171,6 +171,8 @@ namespace xcrack
         m.point         = v.point;
         const double kI = std::max(v.k_I, 0.);
         m.angle         = direction_criterion->kink_angle(kI, v.k_II);
+        if (std::abs(m.angle) < minimum_kink_angle)
+          m.angle = 0;
         // Irwin's G from the interaction integral's K's, the more accurate
         // of the two extractions (G-theta is the cross-check).
         if (equivalent_k == EquivalentK::energy_release_rate)

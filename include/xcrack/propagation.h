@@ -38,7 +38,8 @@ namespace xcrack
    * rate.
    *
    * Mode III does not twist the front: the kink is a rotation about the
-   * front's tangent.
+   * front's tangent. A kink below minimum_kink_angle is no kink (see
+   * there).
    *
    * The cycles between two steps are integrated along the path of the
    * fastest point with K_eq^2 interpolated linearly in the advance between
@@ -88,6 +89,18 @@ namespace xcrack
     moves(const std::vector<FrontValues<dim>> &values,
           const std::vector<unsigned int>     &fronts_per_crack,
           const double                         largest_advance) const;
+
+    /**
+     * Kink angles below this (radians) are taken as zero. A symmetric
+     * crack's K_II is not zero but 1e-8 to 1e-7 of K_I (round-off and the
+     * tip rules' asymmetry), and its sign would tilt the tip's normal:
+     * where the tip lands on a mesh line, that sign decides which vertices
+     * lie ahead of it, hence the enrichment, and a run resumed on another
+     * partition grew differently. 1e-5 rad moves a tip by 1e-5 of its
+     * advance, far below what any K extraction resolves (its K_II carries
+     * 1e-4 of K_I and more of discretisation error).
+     */
+    static constexpr double minimum_kink_angle = 1e-5;
 
     /// Scale the advances of @p moves so that the largest is @p largest.
     static void
