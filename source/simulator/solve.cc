@@ -4,6 +4,53 @@
 
 namespace xcrack
 {
+  namespace
+  {
+    /**
+     * The rigid translations of the space, one per component, on the
+     * locally owned DoFs (in the order of the owned index set): the
+     * near-null space from which AMG builds its coarse spaces. A
+     * translation is 1 on the standard DoFs and 0 on the enriched ones,
+     * whose functions are not constants. DoFTools::extract_constant_modes()
+     * does not know FE_Enriched: deal.II's debug library stops there, and
+     * the release one marked none of the DoFs of enriched cells, leaving
+     * holes in the modes around the cracks.
+     */
+    template <int dim>
+    std::vector<std::vector<bool>>
+    translation_modes(const DoFHandler<dim> &dof_handler)
+    {
+      const IndexSet                &owned = dof_handler.locally_owned_dofs();
+      std::vector<std::vector<bool>> modes(dim,
+                                           std::vector<bool>(owned.n_elements(),
+                                                             false));
+      std::vector<types::global_dof_index> dofs;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const FiniteElement<dim> &fe = cell->get_fe();
+            dofs.resize(fe.n_dofs_per_cell());
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              if (owned.is_element(dofs[i]))
+                {
+                  // The system's base (its copy is the component) and the
+                  // DoF's index in it; in FE_Enriched, base 0 is the
+                  // standard element.
+                  const auto [base, j] = fe.system_to_base_index(i);
+                  const FiniteElement<dim> &element =
+                    fe.base_element(base.first);
+                  if (element.n_base_elements() == 1 ||
+                      element.system_to_base_index(j).first.first == 0)
+                    modes[base.second][owned.index_within_set(dofs[i])] = true;
+                }
+          }
+      return modes;
+    }
+  } // namespace
+
+
+
   template <int dim>
   unsigned int
   Simulator<dim>::solve()
@@ -12,9 +59,7 @@ namespace xcrack
 
     std::vector<std::vector<bool>> constant_modes;
     if (linear_solver.type != "direct")
-      DoFTools::extract_constant_modes(dof_handler,
-                                       ComponentMask(dim, true),
-                                       constant_modes);
+      constant_modes = translation_modes(dof_handler);
 
     TrilinosWrappers::MPI::Vector distributed(locally_owned_dofs,
                                               mpi_communicator);
