@@ -46,8 +46,9 @@ namespace xcrack
     parse_parameters(ParameterHandler &prm);
 
     /**
-     * Solve @p matrix x = @p rhs. @p constant_modes are the per-component
-     * constant modes of the displacement space (for AMG). Returns the number
+     * Solve @p matrix x = @p rhs. @p constant_modes are the rigid
+     * translations of the displacement space, one per component, on the
+     * locally owned DoFs (AMG's near-null space). Returns the number
      * of iterations (1 for the direct solver). Throws if the iterative
      * solver does not converge.
      */

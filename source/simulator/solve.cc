@@ -1,5 +1,3 @@
-#include <deal.II/dofs/dof_tools.h>
-
 #include <xcrack/simulator.h>
 
 namespace xcrack
@@ -18,7 +16,8 @@ namespace xcrack
      */
     template <int dim>
     std::vector<std::vector<bool>>
-    translation_modes(const DoFHandler<dim> &dof_handler)
+    translation_modes(const DoFHandler<dim> &dof_handler,
+                      const bool             enriched_space)
     {
       const IndexSet                &owned = dof_handler.locally_owned_dofs();
       std::vector<std::vector<bool>> modes(dim,
@@ -32,18 +31,10 @@ namespace xcrack
             dofs.resize(fe.n_dofs_per_cell());
             cell->get_dof_indices(dofs);
             for (unsigned int i = 0; i < dofs.size(); ++i)
-              if (owned.is_element(dofs[i]))
-                {
-                  // The system's base (its copy is the component) and the
-                  // DoF's index in it; in FE_Enriched, base 0 is the
-                  // standard element.
-                  const auto [base, j] = fe.system_to_base_index(i);
-                  const FiniteElement<dim> &element =
-                    fe.base_element(base.first);
-                  if (element.n_base_elements() == 1 ||
-                      element.system_to_base_index(j).first.first == 0)
-                    modes[base.second][owned.index_within_set(dofs[i])] = true;
-                }
+              if (owned.is_element(dofs[i]) &&
+                  !(enriched_space && Enrichment<dim>::is_enriched_dof(fe, i)))
+                modes[fe.system_to_component_index(i).first]
+                     [owned.index_within_set(dofs[i])] = true;
           }
       return modes;
     }
@@ -59,7 +50,7 @@ namespace xcrack
 
     std::vector<std::vector<bool>> constant_modes;
     if (linear_solver.type != "direct")
-      constant_modes = translation_modes(dof_handler);
+      constant_modes = translation_modes(dof_handler, enrichment != nullptr);
 
     TrilinosWrappers::MPI::Vector distributed(locally_owned_dofs,
                                               mpi_communicator);
