@@ -9,6 +9,8 @@
 
 #include <Amesos_Mumps.h>
 #include <Epetra_CrsMatrix.h>
+#include <Epetra_Export.h>
+#include <Epetra_IntVector.h>
 #include <Epetra_LinearProblem.h>
 #include <Epetra_MpiComm.h>
 #include <Teuchos_ParameterList.hpp>
@@ -46,6 +48,16 @@ namespace xcrack
         "metis and PORD give about the same factor; metis orders in a "
         "fraction of PORD's time, which MUMPS spends on one rank "
         "(doc/performance.md, \"The ordering of the direct solver\").");
+      prm.declare_entry(
+        "Partition",
+        "balanced",
+        Patterns::Selection("balanced|assembly"),
+        "cg amg on several MPI ranks: which rows each rank solves. "
+        "balanced: the matrix is moved so that every rank holds the same "
+        "number of its entries (the cost of AMG and of CG); assembly: the "
+        "rows each rank assembled, which Parallel/Partition = work makes "
+        "uneven (the rank with the front has fewer rows). The direct "
+        "solver ignores it.");
       prm.declare_entry("Relative tolerance",
                         "1e-10",
                         Patterns::Double(0, 1),
@@ -67,6 +79,7 @@ namespace xcrack
     {
       type               = prm.get("Type");
       ordering           = prm.get("Direct solver ordering");
+      partition          = prm.get("Partition");
       relative_tolerance = prm.get_double("Relative tolerance");
       max_iterations     = prm.get_integer("Maximum iterations");
     }
@@ -237,8 +250,88 @@ namespace xcrack
                           false,
                           false);
     SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-    cg.solve(*last_matrix, x, rhs, *amg);
+    if (!balanced_matrix)
+      {
+        cg.solve(*last_matrix, x, rhs, *amg);
+        return control.last_step();
+      }
+    const MPI_Comm                comm = x.get_mpi_communicator();
+    TrilinosWrappers::MPI::Vector balanced_x(balanced_rows, comm),
+      balanced_rhs(balanced_rows, comm);
+    balanced_x.trilinos_vector().Export(x.trilinos_vector(),
+                                        *to_balanced,
+                                        Insert);
+    balanced_rhs.trilinos_vector().Export(rhs.trilinos_vector(),
+                                          *to_balanced,
+                                          Insert);
+    cg.solve(*balanced_matrix, balanced_x, balanced_rhs, *amg);
+    // The export's reverse: each assembled row from its balanced owner.
+    x.trilinos_vector().Import(balanced_x.trilinos_vector(),
+                               *to_balanced,
+                               Insert);
     return control.last_step();
+  }
+
+
+
+  std::vector<std::vector<bool>>
+  LinearSolver::balance_rows(
+    const TrilinosWrappers::SparseMatrix &matrix,
+    const std::vector<std::vector<bool>> &constant_modes)
+  {
+    // The rows in the order of the ranks, then of each rank's rows (for
+    // deal.II's DoF numbering, ascending): rank p receives those whose
+    // entries start in the p-th share of all entries.
+    const Epetra_CrsMatrix &assembled = matrix.trilinos_matrix();
+    const MPI_Comm          comm      = matrix.get_mpi_communicator();
+    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    const unsigned long long mine   = assembled.NumMyNonzeros();
+    unsigned long long       before = 0, total = 0;
+    MPI_Exscan(&mine, &before, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm);
+    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+      before = 0; // MPI_Exscan leaves the first rank's result undefined
+    MPI_Allreduce(&mine, &total, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm);
+    std::map<unsigned int, std::vector<types::global_dof_index>> send;
+    for (int i = 0; i < assembled.NumMyRows(); ++i)
+      {
+        const unsigned int rank = static_cast<unsigned int>(
+          std::min<unsigned long long>(n_ranks - 1, before * n_ranks / total));
+        send[rank].push_back(assembled.GRID(i));
+        before += assembled.NumMyEntries(i);
+      }
+    balanced_rows = IndexSet(matrix.m());
+    for (const auto &[rank, rows] :
+         dealii::Utilities::MPI::some_to_some(comm, send))
+      balanced_rows.add_indices(rows.begin(), rows.end());
+    balanced_rows.compress();
+
+    const Epetra_Map rows = balanced_rows.make_trilinos_map(comm, false);
+    to_balanced = std::make_unique<Epetra_Export>(assembled.RowMap(), rows);
+    // Row lengths first: a matrix that knows them takes its entries
+    // without reallocating (half the time of FillComplete()).
+    Epetra_IntVector lengths(assembled.RowMap()), moved_lengths(rows);
+    for (int i = 0; i < assembled.NumMyRows(); ++i)
+      lengths[i] = assembled.NumMyEntries(i);
+    moved_lengths.Export(lengths, *to_balanced, Insert);
+    Epetra_CrsMatrix moved(Copy, rows, moved_lengths.Values(), true);
+    moved.Export(assembled, *to_balanced, Insert);
+    moved.FillComplete(rows, rows);
+    balanced_matrix = std::make_unique<TrilinosWrappers::SparseMatrix>();
+    balanced_matrix->reinit(moved);
+
+    // The near-null space moves with its rows.
+    Epetra_MultiVector modes(assembled.RowMap(), constant_modes.size());
+    for (unsigned int d = 0; d < constant_modes.size(); ++d)
+      for (unsigned int i = 0; i < constant_modes[d].size(); ++i)
+        modes[d][i] = constant_modes[d][i];
+    Epetra_MultiVector moved_modes(rows, constant_modes.size());
+    moved_modes.Export(modes, *to_balanced, Insert);
+    std::vector<std::vector<bool>> balanced_modes(
+      constant_modes.size(), std::vector<bool>(rows.NumMyElements()));
+    for (unsigned int d = 0; d < constant_modes.size(); ++d)
+      for (int i = 0; i < rows.NumMyElements(); ++i)
+        balanced_modes[d][i] = (moved_modes[d][i] != 0);
+    return balanced_modes;
   }
 
 
@@ -266,9 +359,13 @@ namespace xcrack
         data.higher_order_elements = false;
         data.smoother_sweeps       = 2;
         data.aggregation_threshold = 0.02;
-        data.constant_modes        = constant_modes;
+        const bool balance =
+          (partition == "balanced" && dealii::Utilities::MPI::n_mpi_processes(
+                                        matrix.get_mpi_communicator()) > 1);
+        data.constant_modes =
+          (balance ? balance_rows(matrix, constant_modes) : constant_modes);
         amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-        amg->initialize(matrix, data);
+        amg->initialize(balance ? *balanced_matrix : matrix, data);
         return solve_cg(x, rhs);
       }
     catch (...)
@@ -300,12 +397,26 @@ namespace xcrack
   }
 
 
+  unsigned long long
+  LinearSolver::n_local_entries() const
+  {
+    Assert(last_matrix != nullptr, ExcMessage("No solve() before."));
+    return (balanced_matrix ? *balanced_matrix : *last_matrix)
+      .trilinos_matrix()
+      .NumMyNonzeros();
+  }
+
+
+
   void
   LinearSolver::release()
   {
     factorization.reset();
     problem.reset();
     amg.reset();
+    balanced_matrix.reset();
+    to_balanced.reset();
+    balanced_rows.clear();
     last_matrix = nullptr;
   }
 } // namespace xcrack
