@@ -609,10 +609,13 @@ namespace xcrack
             minus = CellQuadrature::cut_cell_rule<dim>(lsn, 2).second;
           else
             {
-              const Quadrature<dim> rule = CellQuadrature::tip_cell_rule<dim>(
-                lsn,
-                lst,
-                std::max(assembly_points_1d, parameters.tip_quadrature_points));
+              const Quadrature<dim> &rule =
+                classified_rules[{cell->active_cell_index(), c}] =
+                  CellQuadrature::tip_cell_rule<dim>(
+                    lsn,
+                    lst,
+                    std::max(assembly_points_1d,
+                             parameters.tip_quadrature_points));
               double total = 0;
               minus        = 0;
               for (unsigned int q = 0; q < rule.size(); ++q)
@@ -772,6 +775,7 @@ namespace xcrack
       }
     special_rules.clear();
     cell_rules.clear();
+    classified_rules.clear();
     cell_kind.assign(tria.n_active_cells(), CellKind::plain);
     near_front.assign(tria.n_active_cells(), false);
     cell_crack.assign(tria.n_active_cells(), 0);
@@ -1100,8 +1104,16 @@ namespace xcrack
     };
     std::map<types::global_dof_index, Support> support;
     std::vector<types::global_dof_index>       dofs;
+    // Q1 elements have vertex DoFs only: no supports to look at (filling
+    // the map is not free where the tip zone is large, doc/performance.md).
+    bool inner_dofs = false;
+    for (unsigned int i = 0; i < fe_collection.size(); ++i)
+      inner_dofs = inner_dofs || fe_collection[i].n_dofs_per_cell() >
+                                   fe_collection[i].n_dofs_per_vertex() *
+                                     GeometryInfo<dim>::vertices_per_cell;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (!cell->is_artificial() && cell->active_fe_index() != plain)
+      if (inner_dofs && !cell->is_artificial() &&
+          cell->active_fe_index() != plain)
         {
           dofs.resize(cell->get_fe().n_dofs_per_cell());
           cell->get_dof_indices(dofs);

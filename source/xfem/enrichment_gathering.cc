@@ -6,7 +6,6 @@
 #include <deal.II/base/mpi.h>
 
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/grid/grid_tools.h>
 
 #include <xcrack/input_error.h>
 #include <xcrack/xfem/enrichment.h>
@@ -80,12 +79,26 @@ namespace xcrack
     std::map<unsigned int, Node>         nodes; // by vertex index
     std::vector<types::global_dof_index> dofs;
     double                               largest_tip_cell = 0;
-    // The cells around each vertex, for the frames: one pass over the mesh
-    // (a search per vertex made the set-up quadratic in the cells).
-    const std::vector<
-      std::set<typename Triangulation<dim>::active_cell_iterator>>
-      cells_of_vertex =
-        GridTools::vertex_to_cell_map(dof_handler.get_triangulation());
+    // The cells around each vertex of the owned tip-zone cells, for the
+    // frames: one pass over the mesh (a search per vertex made the set-up
+    // quadratic in the cells), and only for those vertices
+    // (GridTools::vertex_to_cell_map() builds them for every vertex of the
+    // mesh). Hanging vertices miss the coarse cells they hang on, but their
+    // DoFs are constrained by the hanging nodes and their frames unused.
+    std::vector<bool> in_zone(dof_handler.get_triangulation().n_vertices(),
+                              false);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->active_fe_index() >= tip)
+        for (const unsigned int v : cell->vertex_indices())
+          in_zone[cell->vertex_index(v)] = true;
+    std::map<unsigned int,
+             std::set<typename Triangulation<dim>::active_cell_iterator>>
+      cells_of_vertex;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int v : cell->vertex_indices())
+          if (in_zone[cell->vertex_index(v)])
+            cells_of_vertex[cell->vertex_index(v)].insert(cell);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->active_fe_index() >= tip)
         {

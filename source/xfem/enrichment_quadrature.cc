@@ -69,8 +69,18 @@ namespace xcrack
     else
       {
         const std::vector<double> lst = vertex_values(cell, c, false);
-        Quadrature<dim>           tip_rule =
-          CellQuadrature::tip_cell_rule<dim>(lsn, lst, n);
+        // classify() built the rule of the assembly's order already.
+        Quadrature<dim> tip_rule;
+        const auto      classified =
+          classified_rules.find({cell->active_cell_index(), c});
+        if (classified != classified_rules.end() &&
+            n == std::max(assembly_points_1d, parameters.tip_quadrature_points))
+          {
+            tip_rule = std::move(classified->second);
+            classified_rules.erase(classified);
+          }
+        else
+          tip_rule = CellQuadrature::tip_cell_rule<dim>(lsn, lst, n);
         // The graded Gauss rule where it is the smaller of the two.
         unsigned int n_graded = numbers::invalid_unsigned_int;
         if (graded)

@@ -469,6 +469,11 @@ namespace xcrack
     mutable std::map<unsigned int, const Quadrature<dim> *> special_rules;
     mutable std::map<unsigned int, Quadrature<dim>>         cell_rules;
     mutable std::map<unsigned int, QGauss<dim>>             gauss_rules;
+    /// The tip rules classify() builds to see which side of the crack the
+    /// cells' points lie on, by (active cell index, crack):
+    /// special_quadrature() takes them over rather than building them again.
+    mutable std::map<std::pair<unsigned int, unsigned int>, Quadrature<dim>>
+      classified_rules;
   };
 } // namespace xcrack
 
