@@ -15,7 +15,9 @@
 #include <Epetra_MpiComm.h>
 #include <Teuchos_ParameterList.hpp>
 #include <algorithm>
+#include <iostream>
 #include <metis.h>
+#include <sstream>
 #include <stdexcept>
 
 namespace xcrack
@@ -90,6 +92,31 @@ namespace xcrack
 
   namespace
   {
+    /**
+     * Holds back what is written to std::cerr while it lives. Amesos_Mumps
+     * writes "Amesos_Mumps : ERROR" there whenever MUMPS returns an error,
+     * also for the workspace shortfalls that solve_direct() retries with
+     * more room: a run that recovered would print errors, and one that did
+     * not says what failed in its exception.
+     */
+    class HeldBackErrors
+    {
+    public:
+      HeldBackErrors()
+        : previous(std::cerr.rdbuf(held.rdbuf()))
+      {}
+      ~HeldBackErrors()
+      {
+        std::cerr.rdbuf(previous);
+      }
+
+    private:
+      std::ostringstream held;
+      std::streambuf    *previous;
+    };
+
+
+
     /**
      * METIS nested dissection of the graph of @p matrix, as MUMPS's
      * PERM_IN (the 1-based position of each row in the pivot order), on
@@ -194,7 +221,8 @@ namespace xcrack
     const std::vector<int> permutation =
       (ordering == "metis" ? metis_ordering(matrix.trilinos_matrix()) :
                              std::vector<int>());
-    int error = 0, info = 0;
+    int                  error = 0, info = 0;
+    const HeldBackErrors quiet;
     for (int relaxation = 100; relaxation <= 1600; relaxation *= 2)
       {
         factorization = std::make_unique<Amesos_Mumps>(*problem);
