@@ -10,11 +10,17 @@
 // - Where the exact solution lies in the enriched space (Case 1 with the
 //   whole body in the geometric zone; the solve reaches it to an energy
 //   error of 5e-5, its conditioning), K is exact to 1e-5 and the estimate
-//   stays below 1e-4, not a false alarm; on the second mesh, the first whose
-//   dual crown is wide enough for the run to trust the estimate.
-// - On Case 1 with topological enrichment, the estimate of K_exact - K on
-//   the fourth mesh has the sign of the error and an effectivity
-//   (estimate / error) within [0.5, 2].
+//   stays below 3e-4, not a false alarm; on the second mesh, the first whose
+//   dual crown is wide enough for the run to trust the estimate. (Its floor
+//   there, 1.8e-4, is the wide crown's K: the Gauss rules of the coarse
+//   branch cells integrate its smooth weight to about that.)
+// - The same with the smooth weight of the estimate's wide crown (q a
+//   smooth step of r, evaluated at the points).
+// - On Case 1 with topological enrichment and with a geometric zone, the
+//   estimate of K_exact - K on the fourth mesh has the sign of the error
+//   and an effectivity (estimate / error) within [0.5, 2]; with the
+//   geometric zone within [0.75, 1.33], which it missed without the
+//   Dirichlet data's term (0.66).
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -180,7 +186,9 @@ case1(const unsigned int meshes, const std::string &enrichment)
 /// K(U) = dK . U + K(0) on the simulator's last solve.
 template <int dim>
 void
-check_derivatives(const std::string &scene, const std::string &text)
+check_derivatives(const std::string &scene,
+                  const std::string &text,
+                  const bool         smooth_weight)
 {
   const auto       simulator = run<dim>(text);
   const Probe<dim> probe(*simulator);
@@ -192,6 +200,7 @@ check_derivatives(const std::string &scene, const std::string &text)
   // In 3D, hats spanning four segments: K at a node is a weighted sum
   // over several test functions.
   xcrack::FractureParameters parameters;
+  parameters.smooth_weight = smooth_weight;
   if (dim == 3)
     {
       parameters.smoothing = xcrack::FrontBasis::Type::lagrange_regularized;
@@ -221,7 +230,8 @@ check_derivatives(const std::string &scene, const std::string &text)
           dk_u += weight * (derivatives.test_loads[t][m] * u);
         gap = std::max(gap, std::abs(dk_u + c[m] - k[m]));
       }
-  logfile << scene << ": " << values.size() << " front point(s), "
+  logfile << scene << (smooth_weight ? ", smooth weight" : "") << ": "
+          << values.size() << " front point(s), "
           << derivatives.node_weights.size() << " x " << dim
           << " derivatives from " << derivatives.test_loads.size()
           << " test function(s); K = dK . U + K(0) to 1e-10 max |K|: "
@@ -235,10 +245,12 @@ main(int argc, char **argv)
   logfile.open("output");
   logfile << std::scientific << std::setprecision(2);
 
-  check_derivatives<2>("2D Case 1, geometric",
-                       case1(1,
-                             " set Tip enrichment = geometric\n"
-                             " set Enrichment radius = 0.25\n"));
+  for (const bool smooth_weight : {false, true})
+    check_derivatives<2>("2D Case 1, geometric",
+                         case1(1,
+                               " set Tip enrichment = geometric\n"
+                               " set Enrichment radius = 0.25\n"),
+                         smooth_weight);
   {
     std::ostringstream in;
     in << "set Dimension = 3\n"
@@ -252,7 +264,10 @@ main(int argc, char **argv)
        << "  set Center = 0, 0, 0.05\n  set Normal = 0, 0.2, 1\n"
        << " end\nend\n"
        << "subsection Fracture parameters\n set Crown radii = 1, 2\nend\n";
-    check_derivatives<3>("3D tilted penny, lip pressure", in.str());
+    for (const bool smooth_weight : {false, true})
+      check_derivatives<3>("3D tilted penny, lip pressure",
+                           in.str(),
+                           smooth_weight);
   }
 
   // The whole body in the geometric zone: the Williams field is in the
@@ -267,9 +282,32 @@ main(int argc, char **argv)
       << "Case 1, whole body enriched, second mesh: |K_I - 1|, |K_II - 0.5| below "
          "1e-5: "
       << yes(std::abs(v.k_I - 1) < 1e-5 && std::abs(v.k_II - 0.5) < 1e-5)
-      << "; the estimates below 1e-4: "
-      << yes(std::abs(v.k_error[0]) < 1e-4 && std::abs(v.k_error[1]) < 1e-4)
+      << "; the estimates below 3e-4: "
+      << yes(std::abs(v.k_error[0]) < 3e-4 && std::abs(v.k_error[1]) < 3e-4)
       << std::endl;
+  }
+
+  // A geometric zone, four meshes: K's error is second order in h, and
+  // so are the dual's error from its load and the Dirichlet data's
+  // interpolation; without the smooth weight K_I's effectivity was 0.27,
+  // without the Dirichlet term 0.66.
+  {
+    const auto     simulator = run<2>(case1(4,
+                                        " set Tip enrichment = geometric\n"
+                                            " set Enrichment radius = 0.25\n"));
+    const Probe<2> probe(*simulator);
+    const auto    &v         = probe.values()[0];
+    const double   errors[2] = {1 - v.k_I, 0.5 - v.k_II};
+    for (unsigned int m = 0; m < 2; ++m)
+      {
+        const double effectivity = v.k_error[m] / errors[m];
+        logfile << "Case 1, geometric, fourth mesh: K_" << (m ? "II" : "I")
+                << " error " << errors[m] << ", estimate " << v.k_error[m]
+                << ", effectivity in [0.5, 2]: "
+                << yes(effectivity >= 0.5 && effectivity <= 2)
+                << ", in [0.75, 1.33]: "
+                << yes(effectivity >= 0.75 && effectivity <= 1.33) << std::endl;
+      }
   }
 
   // Topological enrichment, four meshes.

@@ -195,8 +195,15 @@ namespace xcrack
         const double scale  = (parameters.crown_in_cells ? h : 1.);
         const double r_inf  = parameters.crown_inner * scale;
         const double r_sup  = parameters.crown_outer * scale;
-        const auto   q_of_r = [&](const double r) {
-          return std::clamp((r_sup - r) / (r_sup - r_inf), 0., 1.);
+        const bool   smooth = parameters.smooth_weight;
+        // q(r): linear from r_inf to r_sup, or a smooth step (dq_dr).
+        const auto q_of_r = [&](const double r) {
+          const double t = std::clamp((r_sup - r) / (r_sup - r_inf), 0., 1.);
+          return smooth ? t * t * (3 - 2 * t) : t;
+        };
+        const auto dq_dr = [&](const double r) {
+          const double t = std::clamp((r_sup - r) / (r_sup - r_inf), 0., 1.);
+          return 6 * t * (1 - t) / (r_inf - r_sup);
         };
         const FrontCurve<dim> curve(fronts[f], 0.5 * r_sup);
 
@@ -250,7 +257,8 @@ namespace xcrack
 
         std::vector<Tensor<2, dim>> grad_u;
         Vector<double>              f_value(dim);
-        // Per vertex: q e1 (made tangent to the boundary), psi_j(s).
+        // Per vertex: q e1 (made tangent to the boundary; e1 alone with a
+        // smooth weight, whose q is evaluated at the points), psi_j(s).
         std::array<Tensor<1, dim>, n_vertices>      w_vertex;
         std::array<std::vector<double>, n_vertices> psi_vertex;
         std::vector<unsigned int>                   active_tests;
@@ -298,15 +306,20 @@ namespace xcrack
               {
                 const auto projection =
                   curve.project(cell->vertex(v), first, last);
-                const double q = q_of_r(std::hypot(
+                const double r = std::hypot(
                   (projection.R * (cell->vertex(v) - projection.foot))[0],
-                  (projection.R * (cell->vertex(v) - projection.foot))[1]));
-                q_min          = std::min(q_min, q);
-                q_max          = std::max(q_max, q);
+                  (projection.R * (cell->vertex(v) - projection.foot))[1]);
+                const double q = q_of_r(r);
+                // A smooth weight is read at the points: the cell's range
+                // of it, from the vertices' distances widened by the cell.
+                q_min =
+                  std::min(q_min, smooth ? q_of_r(r + cell->diameter()) : q);
+                q_max =
+                  std::max(q_max, smooth ? q_of_r(r - cell->diameter()) : q);
                 Tensor<1, dim> e1;
                 for (unsigned int d = 0; d < dim; ++d)
                   e1[d] = projection.R[0][d];
-                w_vertex[v] = q * e1;
+                w_vertex[v] = (smooth ? 1. : q) * e1;
                 psi_vertex[v].resize(n_test);
                 for (unsigned int j = 0; j < n_test; ++j)
                   psi_vertex[v][j] = basis.test_function(j, projection.s);
@@ -352,8 +365,10 @@ namespace xcrack
                   }
             if (derivatives)
               d_b->reinit(cell, active_tests);
-            const auto theta_at = [&](const Point<dim>  &xi,
-                                      const unsigned int j) {
+            // The interpolant of the vertices' psi_j w at reference point
+            // xi, and theta_j there, at distance r from the front.
+            const auto interpolant = [&](const Point<dim>  &xi,
+                                         const unsigned int j) {
               Tensor<1, dim> value;
               for (unsigned int v = 0; v < n_vertices; ++v)
                 value += (psi_vertex[v][j] *
@@ -361,6 +376,10 @@ namespace xcrack
                          w_vertex[v];
               return value;
             };
+            const auto theta_at =
+              [&](const Point<dim> &xi, const double r, const unsigned int j) {
+                return (smooth ? q_of_r(r) : 1.) * interpolant(xi, j);
+              };
 
             // Domain terms: where theta varies (2D: where q does), and
             // wherever theta is not zero under a body force.
@@ -389,19 +408,6 @@ namespace xcrack
                           for (unsigned int k = 0; k < dim; ++k)
                             grad_N[v][j] += g[k] * inverse[k][j];
                       }
-                    for (const unsigned int j : active_tests)
-                      {
-                        grad_theta[j] = Tensor<2, dim>();
-                        for (unsigned int v = 0; v < n_vertices; ++v)
-                          grad_theta[j] +=
-                            outer_product(psi_vertex[v][j] * w_vertex[v],
-                                          grad_N[v]);
-                      }
-
-                    const Tensor<2, dim>         &du  = grad_u[q];
-                    const SymmetricTensor<2, dim> eps = symmetrize(du);
-                    const SymmetricTensor<2, dim> sigma =
-                      material.stress<dim>(eps);
                     const Point<dim> &x   = fe_values.quadrature_point(q);
                     const auto projection = curve.project(x, first, last);
                     const Tensor<1, dim> xl =
@@ -409,6 +415,35 @@ namespace xcrack
                     const double r     = std::hypot(xl[0], xl[1]);
                     const double angle = std::atan2(xl[1], xl[0]);
                     const double JxW   = fe_values.JxW(q);
+
+                    // With a smooth weight theta_j = q(r) I_h(psi_j e1):
+                    // q'(r) I_h(psi_j e1) (x) grad r + q(r) grad I_h(...),
+                    // grad r the unit vector from the foot in the normal
+                    // plane.
+                    Tensor<1, dim> grad_r;
+                    if (smooth && r > 0)
+                      for (unsigned int d = 0; d < dim; ++d)
+                        grad_r[d] = (projection.R[0][d] * xl[0] +
+                                     projection.R[1][d] * xl[1]) /
+                                    r;
+                    for (const unsigned int j : active_tests)
+                      {
+                        grad_theta[j] = Tensor<2, dim>();
+                        for (unsigned int v = 0; v < n_vertices; ++v)
+                          grad_theta[j] +=
+                            outer_product(psi_vertex[v][j] * w_vertex[v],
+                                          grad_N[v]);
+                        if (smooth)
+                          grad_theta[j] =
+                            q_of_r(r) * grad_theta[j] +
+                            dq_dr(r) *
+                              outer_product(interpolant(xi, j), grad_r);
+                      }
+
+                    const Tensor<2, dim>         &du  = grad_u[q];
+                    const SymmetricTensor<2, dim> eps = symmetrize(du);
+                    const SymmetricTensor<2, dim> sigma =
+                      material.stress<dim>(eps);
 
                     // T_kj with I = int T_kj theta_k,j.
                     Tensor<2, dim> T[n_integrals];
@@ -463,7 +498,7 @@ namespace xcrack
                           f[d] = f_value[d];
                         for (const unsigned int j : active_tests)
                           {
-                            const Tensor<1, dim> theta = theta_at(xi, j);
+                            const Tensor<1, dim> theta = theta_at(xi, r, j);
                             for (unsigned int m = 0; m < n_modes; ++m)
                               local[j * n_integrals + m] -=
                                 (f * (du_aux[m] * theta)) * JxW;
@@ -481,7 +516,7 @@ namespace xcrack
                           unit, curve, x, projection, xl, angle, div_aux);
                         for (const unsigned int j : active_tests)
                           {
-                            const Tensor<1, dim> theta    = theta_at(xi, j);
+                            const Tensor<1, dim> theta    = theta_at(xi, r, j);
                             const Tensor<1, dim> du_theta = du * theta;
                             for (unsigned int m = 0; m < n_modes; ++m)
                               {
@@ -556,7 +591,7 @@ namespace xcrack
                 jump[n_modes] = grad_u[2 * k] - grad_u[2 * k + 1];
                 for (const unsigned int j : active_tests)
                   {
-                    const Tensor<1, dim> theta = theta_at(points[k], j);
+                    const Tensor<1, dim> theta = theta_at(points[k], r, j);
                     for (unsigned int m = 0; m < n_integrals; ++m)
                       local[j * n_integrals + m] -=
                         p * (n_ds * (jump[m] * theta));
@@ -573,7 +608,7 @@ namespace xcrack
                       }
                     for (const unsigned int j : active_tests)
                       {
-                        const Tensor<1, dim> theta = theta_at(points[k], j);
+                        const Tensor<1, dim> theta = theta_at(points[k], r, j);
                         for (unsigned int m = 0; m < n_modes; ++m)
                           local[j * n_integrals + m] +=
                             t_plus[m] * (grad_u[2 * k] * theta) -
@@ -586,7 +621,7 @@ namespace xcrack
                           for (const unsigned int j : active_tests)
                             {
                               const Tensor<1, dim> theta =
-                                theta_at(points[k], j);
+                                theta_at(points[k], r, j);
                               for (unsigned int m = 0; m < n_modes; ++m)
                                 d_b->add(j,
                                          m,

@@ -1,9 +1,11 @@
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values_extractors.h>
+#include <deal.II/hp/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 
 #include <xcrack/fracture/auxiliary_fields.h>
@@ -20,12 +22,14 @@ namespace xcrack
     const Enrichment<dim>                           &enrichment,
     const AffineConstraints<double>                 &constraints,
     const Material                                  &material,
+    const BoundaryConditions<dim>                   &boundary_conditions,
     const FEValuesOf                                &fe_values_of,
     const std::vector<std::vector<FrontPoint<dim>>> &front_points,
     const std::vector<FrontValues<dim>>             &front_values)
     : dof_handler(dof_handler)
     , enrichment(enrichment)
     , material(material)
+    , boundary_conditions(boundary_conditions)
     , fe_values_of(fe_values_of)
     , fronts(front_points.size())
     , recovery_fe(FE_Q<dim>(1), n_components)
@@ -483,8 +487,81 @@ namespace xcrack
                 (*indicators)[cell->active_cell_index()] += std::abs(share[d]);
             }
         }
+    add_dirichlet_term(fields, result, indicators);
     Utilities::MPI::sum(result, comm, result);
     return result;
+  }
+
+
+
+  template <int dim>
+  void
+  KErrorEstimator<dim>::add_dirichlet_term(
+    const std::vector<const TrilinosWrappers::MPI::Vector *> &fields,
+    std::vector<double>                                      &result,
+    Vector<float>                                            *indicators) const
+  {
+    if (boundary_conditions.dirichlet.empty())
+      return;
+    const hp::FECollection<dim> &fes = dof_handler.get_fe_collection();
+    // g - u_h is the interpolation error of g: two points more than the
+    // element's degree.
+    hp::QCollection<dim - 1> rules;
+    for (unsigned int i = 0; i < fes.size(); ++i)
+      rules.push_back(QGauss<dim - 1>(fes[i].degree + 2));
+    hp::FEFaceValues<dim>            hp_values(fes,
+                                    rules,
+                                    update_values | update_gradients |
+                                      update_quadrature_points |
+                                      update_normal_vectors |
+                                      update_JxW_values);
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<Tensor<1, dim>>      u_h;
+    std::vector<Tensor<1, dim>>      error;
+    std::vector<Tensor<2, dim>>      grad_z;
+    Vector<double>                   g(dim);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->at_boundary())
+        for (const unsigned int face : cell->face_indices())
+          {
+            if (!cell->face(face)->at_boundary())
+              continue;
+            const auto data = boundary_conditions.dirichlet.find(
+              cell->face(face)->boundary_id());
+            if (data == boundary_conditions.dirichlet.end())
+              continue;
+            const ComponentMask &mask =
+              boundary_conditions.dirichlet_mask.at(data->first);
+            hp_values.reinit(cell, face);
+            const FEFaceValues<dim> &values = hp_values.get_present_fe_values();
+            const unsigned int       n_points = values.n_quadrature_points;
+            // The error on the prescribed components.
+            u_h.resize(n_points);
+            values[displacement].get_function_values(*fields[0], u_h);
+            error.assign(n_points, Tensor<1, dim>());
+            for (unsigned int q = 0; q < n_points; ++q)
+              {
+                data->second->vector_value(values.quadrature_point(q), g);
+                for (unsigned int c = 0; c < dim; ++c)
+                  if (mask[c])
+                    error[q][c] = g[c] - u_h[q][c];
+              }
+            grad_z.resize(n_points);
+            for (unsigned int d = 0; d + 1 < fields.size(); ++d)
+              {
+                values[displacement].get_function_gradients(*fields[d + 1],
+                                                            grad_z);
+                double share = 0;
+                for (unsigned int q = 0; q < n_points; ++q)
+                  share -= error[q] *
+                           (material.stress<dim>(symmetrize(grad_z[q])) *
+                            values.normal_vector(q)) *
+                           values.JxW(q);
+                result[d] += share;
+                if (indicators)
+                  (*indicators)[cell->active_cell_index()] += std::abs(share);
+              }
+          }
   }
 
 

@@ -195,11 +195,10 @@ namespace xcrack
           this->get_pcout()
             << "  Warning: Mesh refinement/Strategy = k tolerance with "
                "Enrichment/Tip enrichment = geometric: every refinement "
-               "inside the enrichment radius adds branch DoFs, and the "
-               "estimate misses part of the error of the cells at the "
-               "zone's border (effectivity 0.68 on Case 1 at tolerance "
-               "3e-4); topological enrichment is the measured choice "
-               "(doc/verification.md, \"Refining to a K tolerance\")."
+               "inside the enrichment radius adds branch DoFs (and "
+               "conditioning), where topological enrichment keeps their "
+               "number as the mesh is refined (doc/verification.md, "
+               "\"Refining to a K tolerance\")."
             << std::endl;
           warned = true;
         }

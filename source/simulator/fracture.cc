@@ -449,6 +449,7 @@ namespace xcrack
   {
     FractureParameters wide                      = fracture_parameters;
     wide.crown_in_cells                          = false;
+    wide.smooth_weight                           = true;
     std::tie(wide.crown_inner, wide.crown_outer) = wide_crown(fronts);
     // Never narrower than the reported K's crown (a coarse front's
     // polygon has corners of a small radius of curvature): the run then
@@ -518,6 +519,7 @@ namespace xcrack
                                          *enrichment,
                                          constraints,
                                          material,
+                                         boundary_conditions,
                                          fe_values_of,
                                          fronts,
                                          wide_values);

@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <xcrack/boundary_conditions.h>
 #include <xcrack/fracture/front_curve.h>
 #include <xcrack/fracture/interaction_integral.h>
 #include <xcrack/fracture/williams.h>
@@ -64,11 +65,26 @@ namespace xcrack
    * of theta, interpolated on the cells) jumps from cell to cell, no
    * recovery sees the dual's error, and the estimate was measured off in
    * sign and size. Simulator::estimate_k_errors() therefore applies this
-   * estimate to K on a crown as wide as the body allows and adds the
-   * difference between the two K's.
+   * estimate to K on a crown as wide as the body allows, whose weight q is
+   * a smooth step of the distance to the front evaluated at the points
+   * (FractureParameters::smooth_weight: no jump of the load at the cells'
+   * faces nor at the crown's edges), and adds the difference between the
+   * two K's.
    *
-   * The integrals of the product over each cell are also the cell's share
-   * of the error: a goal-oriented refinement indicator.
+   * Galerkin orthogonality holds for errors that vanish on the Dirichlet
+   * boundary. The discrete solution takes the interpolant of the data g
+   * there, and with the dual's tractions sigma(z) n on that boundary
+   *
+   *   K(u) - K(u_h) = a(u - u_h, z - z_h) - int_{Gamma_D} (g - u_h) .
+   *                   sigma(z) n ds,
+   *
+   * the second term computed with sigma(z_h) on the prescribed components.
+   * It is second order in h, as the first is where the tip is enriched in
+   * a geometric zone.
+   *
+   * The integrals of the product over each cell (and of the boundary
+   * term over its faces) are also the cell's share of the error: a
+   * goal-oriented refinement indicator.
    */
   template <int dim>
   class KErrorEstimator
@@ -82,12 +98,14 @@ namespace xcrack
      * X-FEM rules; @p constraints tell the vertices whose enriched DoFs
      * are free. The singular parts are those of @p fronts (as given to
      * InteractionIntegral::compute()), with the crown radii and the K
-     * nodes of @p front_values.
+     * nodes of @p front_values. The Dirichlet data are those of
+     * @p boundary_conditions.
      */
     KErrorEstimator(const DoFHandler<dim>           &dof_handler,
                     const Enrichment<dim>           &enrichment,
                     const AffineConstraints<double> &constraints,
                     const Material                  &material,
+                    const BoundaryConditions<dim>   &boundary_conditions,
                     const FEValuesOf                &fe_values_of,
                     const std::vector<std::vector<FrontPoint<dim>>> &fronts,
                     const std::vector<FrontValues<dim>> &front_values);
@@ -173,12 +191,21 @@ namespace xcrack
     energy_product(const SymmetricTensor<2, dim> &e,
                    const SymmetricTensor<2, dim> &e_dual) const;
 
-    const DoFHandler<dim> &dof_handler;
-    const Enrichment<dim> &enrichment;
-    const Material        &material;
-    const FEValuesOf       fe_values_of;
-    std::vector<Front>     fronts;
-    WilliamsField          unit;
+    /// Add to @p result (per dual) and @p indicators (per cell, if given)
+    /// the Dirichlet boundary's term, - int (g - u_h) . sigma(z_h) n ds.
+    void
+    add_dirichlet_term(
+      const std::vector<const TrilinosWrappers::MPI::Vector *> &fields,
+      std::vector<double>                                      &result,
+      Vector<float> *indicators) const;
+
+    const DoFHandler<dim>         &dof_handler;
+    const Enrichment<dim>         &enrichment;
+    const Material                &material;
+    const BoundaryConditions<dim> &boundary_conditions;
+    const FEValuesOf               fe_values_of;
+    std::vector<Front>             fronts;
+    WilliamsField                  unit;
     /// Continuous Q1 fields, n_components of them, for the recovery.
     const FESystem<dim>       recovery_fe;
     DoFHandler<dim>           recovery_dof_handler;

@@ -33,9 +33,9 @@ namespace xcrack
      * shares and the crowns around the moved fronts are refined.
      *
      * Both K's are only as good as the mesh resolves their crowns: the
-     * estimate's effectivity was measured 0.1-0.6 with its crown 2-12
-     * cells wide and about 0.9 from 25 cells on, and a K whose crown spans
-     * a few cells of a graded mesh varies by percents (doc/verification.md).
+     * estimate under-reads the error with its crown under 4 cells wide,
+     * and a K whose crown spans a few cells of a graded mesh varies by
+     * percents (doc/verification.md).
      * So the cells of either crown coarser than its width / `Crown cells`
      * are refined as well, and never coarsened beyond it; and the K's
      * crown must be given as lengths (a crown in cells would shrink with
