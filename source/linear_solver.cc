@@ -283,9 +283,10 @@ namespace xcrack
         cg.solve(*last_matrix, x, rhs, *amg);
         return control.last_step();
       }
-    const MPI_Comm                comm = x.get_mpi_communicator();
-    TrilinosWrappers::MPI::Vector balanced_x(balanced_rows, comm),
-      balanced_rhs(balanced_rows, comm);
+    const MPI_Comm  comm = x.get_mpi_communicator();
+    const IndexSet &rows = balanced_matrix->locally_owned_range_indices();
+    TrilinosWrappers::MPI::Vector balanced_x(rows, comm),
+      balanced_rhs(rows, comm);
     balanced_x.trilinos_vector().Export(x.trilinos_vector(),
                                         *to_balanced,
                                         Insert);
@@ -327,7 +328,7 @@ namespace xcrack
         send[rank].push_back(assembled.GRID(i));
         before += assembled.NumMyEntries(i);
       }
-    balanced_rows = IndexSet(matrix.m());
+    IndexSet balanced_rows(matrix.m());
     for (const auto &[rank, rows] :
          dealii::Utilities::MPI::some_to_some(comm, send))
       balanced_rows.add_indices(rows.begin(), rows.end());
@@ -444,7 +445,6 @@ namespace xcrack
     amg.reset();
     balanced_matrix.reset();
     to_balanced.reset();
-    balanced_rows.clear();
     last_matrix = nullptr;
   }
 } // namespace xcrack

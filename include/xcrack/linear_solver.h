@@ -126,7 +126,6 @@ namespace xcrack
     /// from the assembled rows to those (null where the rows stay).
     std::unique_ptr<TrilinosWrappers::SparseMatrix> balanced_matrix;
     std::unique_ptr<Epetra_Export>                  to_balanced;
-    IndexSet                                        balanced_rows;
   };
 } // namespace xcrack
 
