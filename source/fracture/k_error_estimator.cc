@@ -115,6 +115,20 @@ namespace xcrack
 
 
   template <int dim>
+  double
+  KErrorEstimator<dim>::singular_cutoff(const double distance,
+                                        const double r_sup,
+                                        const double h_s)
+  {
+    // Smooth steps (C1) in the distance and in h_s.
+    const double t = std::clamp(distance / r_sup - 1, 0., 1.);
+    const double c = std::clamp(4 * h_s - 2, 0., 1.);
+    return (1 - t * t * (3 - 2 * t)) * c * c * (3 - 2 * c);
+  }
+
+
+
+  template <int dim>
   std::vector<typename KErrorEstimator<dim>::NearFront>
   KErrorEstimator<dim>::near_fronts(const Point<dim> &x) const
   {
@@ -133,9 +147,10 @@ namespace xcrack
         NearFront near;
         near.front = f;
         near.hats  = front.hats(projection.s);
-        // chi: 1 up to r_sup, a smooth step down to 0 at 2 r_sup.
-        const double t = std::clamp(distance / front.r_sup - 1, 0., 1.);
-        near.chi       = 1 - t * t * (3 - 2 * t);
+        near.chi =
+          singular_cutoff(distance, front.r_sup, projection.jacobian_s(xl));
+        if (near.chi == 0)
+          continue;
         Tensor<2, dim> gradients[dim];
         aux_gradients<dim, dim>(
           unit, projection, xl, r, std::atan2(xl[1], xl[0]), gradients);

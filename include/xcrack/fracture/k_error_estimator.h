@@ -41,8 +41,10 @@ namespace xcrack
    * - its singular part sigma_s = chi(r) sum_m c_m(s) sigma^aux_m (the
    *   Williams stresses of unit K's in the front frame, chi = 1 up to
    *   r_sup from the front and 0 beyond 2 r_sup: a cut-off as gentle as
-   *   can be, since the recovery of a steep one reads as error) is set
-   *   aside, its c_m(s) (hats
+   *   can be, since the recovery of a steep one reads as error; along a
+   *   curved front also 0 beyond half the radius of curvature on its
+   *   concave side, where the foot on the front, and so sigma_s, jumps
+   *   from point to point) is set aside, its c_m(s) (hats
    *   on the front's K nodes) fitted to sigma_h by least squares within
    *   r_inf of the front (where, in 2D, the dual problems carry no load);
    * - the rest, sigma_h - sigma_s, is averaged at the vertices (L2
@@ -120,6 +122,24 @@ namespace xcrack
     estimate(const TrilinosWrappers::MPI::Vector              &solution,
              const std::vector<TrilinosWrappers::MPI::Vector> &duals,
              Vector<float> *indicators = nullptr) const;
+
+    /**
+     * The cut-off chi of the recovery's singular part at a point @p
+     * distance from the front, whose Jacobian along the front is @p h_s
+     * (FrontCurve::Projection::jacobian_s(): 1 in 2D and along a straight
+     * front, 1 - r / rho towards a centre of curvature): 1 up to @p r_sup,
+     * a smooth step down to 0 at 2 r_sup, and, along a curved front, also
+     * down to 0 where h_s falls from 3/4 to 1/2 (a quarter to half the
+     * radius of curvature away on the concave side). Beyond, the foot on
+     * the front jumps from point to point (FrontCurve::normal_plane_foot()),
+     * and with it the singular part's frame and coefficients; the recovery
+     * read those jumps as error (doc/verification.md, "The singular part's
+     * cut-off along a curved front").
+     */
+    static double
+    singular_cutoff(const double distance,
+                    const double r_sup,
+                    const double h_s);
 
     /// The size of each field's recovered stresses: the memory of
     /// estimate() is about twice this per field.
