@@ -13,6 +13,7 @@
 
 #include <xcrack/fracture/front_curve.h>
 
+#include "unit_circle_front.h"
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -25,29 +26,6 @@ std::ofstream logfile("output");
 
 namespace
 {
-  /// Points of the unit circle z = 0 clockwise (e1 = e2 x e3 points
-  /// outwards, as on a crack's front), the last repeating the first when
-  /// @p closed; @p n_segments over the angle @p span.
-  std::vector<FrontPoint<3>>
-  circle(const unsigned int n_segments, const double span, const bool closed)
-  {
-    std::vector<FrontPoint<3>> points(n_segments + 1);
-    for (unsigned int i = 0; i <= n_segments; ++i)
-      {
-        const double t =
-          -span * (closed && i == n_segments ? 0 : i) / n_segments;
-        FrontPoint<3> &p = points[i];
-        p.position       = Point<3>(std::cos(t), std::sin(t), 0);
-        p.e1             = Tensor<1, 3>({std::cos(t), std::sin(t), 0});
-        p.e2             = Tensor<1, 3>({0, 0, 1});
-        p.e3             = Tensor<1, 3>({std::sin(t), -std::cos(t), 0});
-        if (i > 0)
-          p.s = points[i - 1].s + points[i - 1].position.distance(
-                                    Point<3>(std::cos(t), std::sin(t), 0));
-      }
-    return points;
-  }
-
   /// Abscissa of the nearest point of the polyline to @p x, by brute force.
   double
   nearest_abscissa(const std::vector<FrontPoint<3>> &points, const Point<3> &x)
@@ -72,7 +50,7 @@ namespace
 int
 main()
 {
-  const auto          points = circle(64, 2 * M_PI, true);
+  const auto          points = unit_circle_front(64, 2 * M_PI, true);
   const FrontCurve<3> curve(points, 0.25);
   logfile << "closed front: " << curve.closed << ", length " << std::fixed
           << std::setprecision(6) << curve.length << '\n';
@@ -134,7 +112,7 @@ main()
   // An open front (a half circle): a point in its normal planes and points
   // beyond its ends.
   {
-    const auto          half = circle(32, M_PI, false);
+    const auto          half = unit_circle_front(32, M_PI, false);
     const FrontCurve<3> open(half, 0.25);
     const Point<3>      inside(0.9 * std::cos(-1.0), 0.9 * std::sin(-1.0), 0);
     const auto          a = open.project(inside);

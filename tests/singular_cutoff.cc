@@ -19,6 +19,7 @@
 #include <xcrack/fracture/front_curve.h>
 #include <xcrack/fracture/k_error_estimator.h>
 
+#include "unit_circle_front.h"
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -35,33 +36,14 @@ namespace
   {
     return b ? "yes" : "NO";
   }
-
-  /// The unit circle z = 0 clockwise (e1 outwards), closed.
-  std::vector<FrontPoint<3>>
-  circle(const unsigned int n_segments)
-  {
-    std::vector<FrontPoint<3>> points(n_segments + 1);
-    for (unsigned int i = 0; i <= n_segments; ++i)
-      {
-        const double   t = -2 * M_PI * (i == n_segments ? 0 : i) / n_segments;
-        FrontPoint<3> &p = points[i];
-        p.position       = Point<3>(std::cos(t), std::sin(t), 0);
-        p.e1             = Tensor<1, 3>({std::cos(t), std::sin(t), 0});
-        p.e2             = Tensor<1, 3>({0, 0, 1});
-        p.e3             = Tensor<1, 3>({std::sin(t), -std::cos(t), 0});
-        if (i > 0)
-          p.s = points[i - 1].s +
-                points[i - 1].position.distance(points[i].position);
-      }
-    return points;
-  }
 } // namespace
 
 int
 main()
 {
-  const double        r_sup  = 0.75;
-  const auto          points = circle(64); // (the curve refers to them)
+  const double r_sup = 0.75;
+  const auto   points =
+    unit_circle_front(64, 2 * M_PI, true); // (the curve refers to them)
   const FrontCurve<3> curve(points, 0.5 * r_sup);
   // The estimator's cut-off at x, as KErrorEstimator::near_fronts() reads
   // it.
