@@ -22,11 +22,19 @@ namespace xcrack
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     const std::vector<unsigned int>                      &active_tests)
   {
-    const unsigned int n_dofs = cell->get_fe().n_dofs_per_cell();
+    const FiniteElement<dim> &fe     = cell->get_fe();
+    const unsigned int        n_dofs = fe.n_dofs_per_cell();
     cell_loads.assign(global.size(), Vector<double>(n_dofs));
     dof_indices.resize(n_dofs);
     cell->get_dof_indices(dof_indices);
     this->active_tests = active_tests;
+    // The component of each primitive shape function (all of X-FEM's
+    // vector elements: FESystem of a scalar FE_Enriched), else none.
+    components.resize(n_dofs);
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      components[i] = fe.is_primitive(i) ?
+                        fe.system_to_component_index(i).first :
+                        numbers::invalid_unsigned_int;
   }
 
 
@@ -38,13 +46,24 @@ namespace xcrack
   {
     const FEValuesExtractors::Vector displacement(0);
     for (unsigned int i = 0; i < dof_indices.size(); ++i)
-      {
-        const Tensor<2, dim> g = values[displacement].gradient(i, q);
-        for (const unsigned int j : active_tests)
-          for (unsigned int m = 0; m < n_modes; ++m)
-            cell_loads[j * n_modes + m][i] +=
-              scalar_product(g, point_loads[j * n_modes + m]);
-      }
+      if (const unsigned int c = components[i];
+          c != numbers::invalid_unsigned_int)
+        {
+          // grad phi_i = e_c (x) grad N_i: only row c of each A counts.
+          const Tensor<1, dim> &g = values.shape_grad(i, q);
+          for (const unsigned int j : active_tests)
+            for (unsigned int m = 0; m < n_modes; ++m)
+              cell_loads[j * n_modes + m][i] +=
+                g * point_loads[j * n_modes + m][c];
+        }
+      else
+        {
+          const Tensor<2, dim> g = values[displacement].gradient(i, q);
+          for (const unsigned int j : active_tests)
+            for (unsigned int m = 0; m < n_modes; ++m)
+              cell_loads[j * n_modes + m][i] +=
+                scalar_product(g, point_loads[j * n_modes + m]);
+        }
     for (const unsigned int j : active_tests)
       for (unsigned int m = 0; m < n_modes; ++m)
         point_loads[j * n_modes + m] = Tensor<2, dim>();

@@ -76,7 +76,10 @@ namespace xcrack
     std::vector<Vector<double>>                cell_loads;
     std::vector<Tensor<2, dim>>                point_loads;
     std::vector<types::global_dof_index>       dof_indices;
-    std::vector<unsigned int>                  active_tests;
+    /// Per shape function of the cell: its one non-zero component, or
+    /// invalid_unsigned_int for a non-primitive one.
+    std::vector<unsigned int> components;
+    std::vector<unsigned int> active_tests;
   };
 } // namespace xcrack
 
