@@ -369,7 +369,9 @@ namespace xcrack
       n_fields, TrilinosWrappers::MPI::Vector(owned, comm));
     std::vector<types::global_dof_index> recovery_dofs(
       recovery_fe.n_dofs_per_cell());
-    Vector<double> local(recovery_fe.n_dofs_per_cell());
+    std::vector<double>       weights;
+    std::vector<unsigned int> slots;
+    Vector<double>            local(recovery_fe.n_dofs_per_cell());
     // The cell-local index of component k of slot s at vertex v, tabulated
     // (FiniteElement::component_to_system_index() searches a table).
     std::vector<unsigned int> index_table(n_vertices * n_components);
@@ -388,24 +390,35 @@ namespace xcrack
           rest_of(values);
           const auto level_sets = level_sets_of(cell);
           recovery_cell(cell)->get_dof_indices(recovery_dofs);
+          // Each point's weight and slot at each vertex, the same for
+          // every field.
+          const unsigned int n_points = values.n_quadrature_points;
+          weights.resize(n_points * n_vertices);
+          slots.resize(n_points * n_vertices);
+          for (const unsigned int q : values.quadrature_point_indices())
+            {
+              const Point<dim> &xi = values.get_quadrature().point(q);
+              for (unsigned int v = 0; v < n_vertices; ++v)
+                {
+                  weights[q * n_vertices + v] =
+                    GeometryInfo<dim>::d_linear_shape_function(xi, v) *
+                    values.JxW(q);
+                  slots[q * n_vertices + v] = slot(cell, v, level_sets, xi);
+                }
+            }
           for (unsigned int f = 0; f < n_fields; ++f)
             {
               local = 0;
-              for (const unsigned int q : values.quadrature_point_indices())
-                {
-                  const Point<dim> &xi = values.get_quadrature().point(q);
-                  for (unsigned int v = 0; v < n_vertices; ++v)
-                    {
-                      const double w =
-                        GeometryInfo<dim>::d_linear_shape_function(xi, v) *
-                        values.JxW(q);
-                      const unsigned int s = slot(cell, v, level_sets, xi);
-                      for (unsigned int k = 0; k < n_stress; ++k)
-                        local[index(v, s, k)] +=
-                          w * rest[f][q].access_raw_entry(k);
-                      local[index(v, s, n_stress)] += w;
-                    }
-                }
+              for (unsigned int q = 0; q < n_points; ++q)
+                for (unsigned int v = 0; v < n_vertices; ++v)
+                  {
+                    const double       w = weights[q * n_vertices + v];
+                    const unsigned int s = slots[q * n_vertices + v];
+                    for (unsigned int k = 0; k < n_stress; ++k)
+                      local[index(v, s, k)] +=
+                        w * rest[f][q].access_raw_entry(k);
+                    local[index(v, s, n_stress)] += w;
+                  }
               recovery_constraints.distribute_local_to_global(local,
                                                               recovery_dofs,
                                                               sums[f]);
