@@ -46,9 +46,10 @@ namespace xcrack
    */
   struct KErrorCells
   {
-    /// Each active cell's share of the estimate, summed over the K's (by
-    /// active cell index, locally owned cells); empty until an estimate
-    /// ran on the current mesh.
+    /// Each active cell's share of the estimate: per K node and mode, the
+    /// |share| of that K's error, weighted by its estimate relative to the
+    /// largest, summed (by active cell index, locally owned cells); empty
+    /// until an estimate ran on the current mesh.
     Vector<float> indicators;
     /// The wide crown the estimate is applied to: these radii around
     /// every tip (after a growth step, around the moved tips).

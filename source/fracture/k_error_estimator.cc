@@ -322,7 +322,7 @@ namespace xcrack
   KErrorEstimator<dim>::estimate(
     const TrilinosWrappers::MPI::Vector              &solution,
     const std::vector<TrilinosWrappers::MPI::Vector> &duals,
-    Vector<float>                                    *indicators) const
+    std::vector<Vector<float>>                       *shares) const
   {
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
     std::vector<const TrilinosWrappers::MPI::Vector *> fields = {&solution};
@@ -462,8 +462,10 @@ namespace xcrack
     // 3. The products of the stress errors sigma* - sigma_h = average -
     // rest, cell by cell.
     std::vector<double> result(duals.size(), 0.);
-    if (indicators)
-      indicators->reinit(dof_handler.get_triangulation().n_active_cells());
+    if (shares)
+      shares->assign(duals.size(),
+                     Vector<float>(
+                       dof_handler.get_triangulation().n_active_cells()));
     std::vector<SymmetricTensor<2, dim>> errors(n_fields);
     std::vector<double>                  share(duals.size());
     std::vector<Vector<double>>          cell_averages(
@@ -511,11 +513,11 @@ namespace xcrack
           for (unsigned int d = 0; d < duals.size(); ++d)
             {
               result[d] += share[d];
-              if (indicators)
-                (*indicators)[cell->active_cell_index()] += std::abs(share[d]);
+              if (shares)
+                (*shares)[d][cell->active_cell_index()] += share[d];
             }
         }
-    add_dirichlet_term(fields, result, indicators);
+    add_dirichlet_term(fields, result, shares);
     Utilities::MPI::sum(result, comm, result);
     return result;
   }
@@ -527,7 +529,7 @@ namespace xcrack
   KErrorEstimator<dim>::add_dirichlet_term(
     const std::vector<const TrilinosWrappers::MPI::Vector *> &fields,
     std::vector<double>                                      &result,
-    Vector<float>                                            *indicators) const
+    std::vector<Vector<float>>                               *shares) const
   {
     if (boundary_conditions.dirichlet.empty())
       return;
@@ -586,8 +588,8 @@ namespace xcrack
                             values.normal_vector(q)) *
                            values.JxW(q);
                 result[d] += share;
-                if (indicators)
-                  (*indicators)[cell->active_cell_index()] += std::abs(share);
+                if (shares)
+                  (*shares)[d][cell->active_cell_index()] += share;
               }
           }
   }

@@ -529,7 +529,9 @@ namespace xcrack
     // vectors per field.)
     const unsigned int tests_per_batch = std::max<types::global_dof_index>(
       1, 120'000'000 / (2 * dim * estimator.n_recovery_dofs()));
-    k_error_cells.indicators.reinit(triangulation.n_active_cells());
+    // Each dual's signed shares per cell, [test][mode], kept until the
+    // nodes' errors are known.
+    std::vector<std::vector<Vector<float>>> test_shares(n_tests);
     for (unsigned int first = 0; first < n_tests; first += tests_per_batch)
       {
         const unsigned int end = std::min(first + tests_per_batch, n_tests);
@@ -546,34 +548,49 @@ namespace xcrack
                                  mpi_communicator);
               duals.back() = z;
             }
-        Vector<float>             indicators;
-        const std::vector<double> errors =
-          estimator.estimate(solution, duals, &indicators);
-        k_error_cells.indicators += indicators;
+        std::vector<Vector<float>> shares;
+        const std::vector<double>  errors =
+          estimator.estimate(solution, duals, &shares);
         unsigned int d = 0;
         for (unsigned int t = first; t < end; ++t)
           for (unsigned int m = 0; m < derivatives.test_loads[t].size(); ++m)
-            test_errors[t][m] = errors[d++];
+            {
+              test_errors[t][m] = errors[d];
+              test_shares[t].push_back(std::move(shares[d]));
+              ++d;
+            }
       }
     // K_exact - K = (K_wide - K) + (K_exact - K_wide).
+    std::vector<std::array<double, 3>> differences(front_values.size());
+    double                             largest = 0;
     for (unsigned int i = 0; i < front_values.size(); ++i)
       {
-        const FrontValues<dim> &w              = wide_values[i];
-        const FrontValues<dim> &v              = front_values[i];
-        const double            differences[3] = {w.k_I - v.k_I,
-                                                  w.k_II - v.k_II,
-                                                  w.k_III - v.k_III};
-        double                  difference     = 0;
+        const FrontValues<dim> &w = wide_values[i];
+        const FrontValues<dim> &v = front_values[i];
+        differences[i]            = {{w.k_I - v.k_I, w.k_II - v.k_II,
+                                      w.k_III - v.k_III}};
         for (unsigned int m = 0; m < dim; ++m)
           {
             double error = 0;
             for (const auto &[t, weight] : derivatives.node_weights[i])
               error += weight * test_errors[t][m];
-            front_values[i].k_error[m] = differences[m] + error;
-            difference += std::abs(differences[m]);
+            front_values[i].k_error[m] = differences[i][m] + error;
+            largest = std::max(largest, std::abs(front_values[i].k_error[m]));
           }
-        // The difference is the error of the crown at the tip: the
-        // indicators share it among the cells within that crown.
+      }
+
+    // The indicators. Each K node's error is a functional of its own (its
+    // dual the weighted sum of the tests'), and so are its cells' shares;
+    // they count by the node's estimated error relative to the largest, so
+    // that the marking aims at the K's that miss the goal (the sum of all
+    // duals' |shares| weighed a mode or node whose K is accurate as much:
+    // doc/verification.md, "Along a 3D front"). The difference of the two
+    // K's is the error of the crown at the node: shared among the cells
+    // within that crown.
+    k_error_cells.indicators.reinit(triangulation.n_active_cells());
+    for (unsigned int i = 0; i < front_values.size() && largest > 0; ++i)
+      {
+        const FrontValues<dim>   &v = front_values[i];
         std::vector<unsigned int> crown_cells;
         for (const auto &cell : dof_handler.active_cell_iterators())
           if (cell->is_locally_owned() &&
@@ -581,8 +598,20 @@ namespace xcrack
             crown_cells.push_back(cell->active_cell_index());
         const double n_crown_cells =
           Utilities::MPI::sum(double(crown_cells.size()), mpi_communicator);
-        for (const unsigned int c : crown_cells)
-          k_error_cells.indicators[c] += difference / n_crown_cells;
+        for (unsigned int m = 0; m < dim; ++m)
+          {
+            const double goal = std::abs(v.k_error[m]) / largest;
+            for (unsigned int c = 0; c < k_error_cells.indicators.size(); ++c)
+              {
+                double share = 0;
+                for (const auto &[t, weight] : derivatives.node_weights[i])
+                  share += weight * test_shares[t][m][c];
+                k_error_cells.indicators[c] += goal * std::abs(share);
+              }
+            for (const unsigned int c : crown_cells)
+              k_error_cells.indicators[c] +=
+                goal * std::abs(differences[i][m]) / n_crown_cells;
+          }
       }
   }
 

@@ -115,13 +115,15 @@ namespace xcrack
     /**
      * The estimates of K(u) - K(u_h) for the dual solutions @p duals
      * (ghosted, with their constraints distributed) of the primal
-     * @p solution (ghosted). With @p indicators, the sum over the duals of
-     * |the cell's share| per active cell index. Collective.
+     * @p solution (ghosted). With @p shares, each dual's signed share per
+     * active cell index (locally owned cells; their sum over the cells is
+     * the estimate): combined as the goal needs, they are refinement
+     * indicators. Collective.
      */
     std::vector<double>
     estimate(const TrilinosWrappers::MPI::Vector              &solution,
              const std::vector<TrilinosWrappers::MPI::Vector> &duals,
-             Vector<float> *indicators = nullptr) const;
+             std::vector<Vector<float>> *shares = nullptr) const;
 
     /**
      * The cut-off chi of the recovery's singular part at a point @p
@@ -211,13 +213,13 @@ namespace xcrack
     energy_product(const SymmetricTensor<2, dim> &e,
                    const SymmetricTensor<2, dim> &e_dual) const;
 
-    /// Add to @p result (per dual) and @p indicators (per cell, if given)
-    /// the Dirichlet boundary's term, - int (g - u_h) . sigma(z_h) n ds.
+    /// Add to @p result and @p shares (per dual; per cell, if given) the
+    /// Dirichlet boundary's term, - int (g - u_h) . sigma(z_h) n ds.
     void
     add_dirichlet_term(
       const std::vector<const TrilinosWrappers::MPI::Vector *> &fields,
       std::vector<double>                                      &result,
-      Vector<float> *indicators) const;
+      std::vector<Vector<float>>                               *shares) const;
 
     const DoFHandler<dim>         &dof_handler;
     const Enrichment<dim>         &enrichment;

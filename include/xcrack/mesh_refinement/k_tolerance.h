@@ -22,7 +22,9 @@ namespace xcrack
      * estimate (`Fracture parameters/Error estimate`, KErrorEstimator): the
      * cells' shares of the estimate of K on a wide crown, plus the
      * difference between that K and the reported one shared among the
-     * cells of the reported crown. Marking is Doerfler's: the fewest cells
+     * cells of the reported crown, K node by K node and mode by mode, each
+     * weighted by its estimate relative to the largest (the goal is the
+     * largest). Marking is Doerfler's: the fewest cells
      * that hold `Refine fraction` of the summed shares are refined, those
      * holding `Coarsen fraction` with the smallest shares coarsened (no
      * refinement by the shares once the estimate is below the tolerance
