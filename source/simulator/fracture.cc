@@ -567,8 +567,7 @@ namespace xcrack
       {
         const FrontValues<dim> &w = wide_values[i];
         const FrontValues<dim> &v = front_values[i];
-        differences[i]            = {{w.k_I - v.k_I, w.k_II - v.k_II,
-                                      w.k_III - v.k_III}};
+        differences[i] = {{w.k_I - v.k_I, w.k_II - v.k_II, w.k_III - v.k_III}};
         for (unsigned int m = 0; m < dim; ++m)
           {
             double error = 0;
