@@ -53,6 +53,16 @@ namespace xcrack
                         Patterns::Selection("cells|absolute"),
                         "cells: the radii are multiples of the size of the "
                         "cell holding the tip; absolute: lengths.");
+      prm.declare_entry(
+        "Crown weight",
+        "linear",
+        Patterns::Selection("linear|smooth"),
+        "The virtual extension's q across the crown: linear in r, "
+        "interpolated from the cells' vertices (the usual G-theta "
+        "domain), or a smooth step of r (zero slope at both radii) "
+        "evaluated at every quadrature point, whose K varies less from "
+        "mesh to mesh where the crown's cells are graded (adaptive "
+        "refinement); doc/verification.md.");
       prm.declare_entry("Reference K",
                         "",
                         Patterns::Anything(),
@@ -98,6 +108,7 @@ namespace xcrack
     const std::vector<double> radii =
       parse_numbers(radii_text, 2, section + "Crown radii");
     crown_in_cells              = (prm.get("Crown unit") == "cells");
+    smooth_weight               = (prm.get("Crown weight") == "smooth");
     const std::string reference = prm.get("Reference K");
     smoothing                   = FrontBasis::parse_type(prm.get("Smoothing"));
     legendre_degree             = prm.get_integer("Legendre degree");

@@ -66,12 +66,14 @@ namespace xcrack
     /// override Front segments (the K error estimate puts the K of its
     /// wide crown on the nodes of the reported K's); empty: none.
     std::vector<unsigned int> node_segments;
-    /// Not a parameter: the crown's weight q falls from 1 to 0 as a
-    /// smooth step of r (zero slope at both radii), evaluated at every
+    /// `Crown weight = smooth`: the crown's weight q falls from 1 to 0 as
+    /// a smooth step of r (zero slope at both radii), evaluated at every
     /// point rather than interpolated from the vertices. The K error
-    /// estimate's wide crown uses it: its dual problems are loaded by the
-    /// gradient of q, and a load that jumps from cell to cell or at the
-    /// crown's edges gives a dual solution no recovery can see the error of.
+    /// estimate's wide crown always uses it: its dual problems are loaded
+    /// by the gradient of q, and a load that jumps from cell to cell or at
+    /// the crown's edges gives a dual solution no recovery can see the
+    /// error of. The reported K with it wanders less from one graded mesh
+    /// to the next (doc/verification.md, "Along a 3D front").
     bool smooth_weight = false;
     /// K_I; K_II (2D) or K_I; K_II; K_III (3D); null if not given.
     std::shared_ptr<Function<2>> reference_2d;
