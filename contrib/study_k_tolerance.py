@@ -10,7 +10,8 @@ lengths, 0.1 to 0.3 from the tip), prints:
   true and the estimated K error there, whether the goal was met, and the
   wall time of the whole run (the sum of its phases).
 
-    /usr/bin/python3 contrib/study_k_tolerance.py            # 40 s
+    /usr/bin/python3 contrib/study_k_tolerance.py            # 20 s
+    /usr/bin/python3 contrib/study_k_tolerance.py --crown-weight smooth
     /usr/bin/python3 contrib/study_k_tolerance.py --picture  # 10 s
 
 `--picture` draws doc/figures/k_tolerance_meshes.png: the meshes on which
@@ -36,7 +37,8 @@ PHASES = ["t_setup", "t_assemble", "t_solve", "t_errors", "t_fracture",
           "t_output", "t_refine"]
 
 
-def run(benchmark, reference, refinement, picture=False):
+def run(benchmark, reference, refinement, picture=False,
+        crown_weight="linear"):
     """The rows of statistics.csv; with `picture`, and the corners of the
     last mesh's cells."""
     with tempfile.TemporaryDirectory() as work:
@@ -46,6 +48,7 @@ def run(benchmark, reference, refinement, picture=False):
             "end\n" + TOPOLOGICAL +
             "subsection Fracture parameters\n"
             "  set Crown unit = absolute\n  set Crown radii = 0.1, 0.3\n"
+            f"  set Crown weight = {crown_weight}\n"
             f"  set Reference K = {reference[0]}; {reference[1]}\n"
             "  set Error estimate = true\nend\n"
             "subsection Mesh refinement\n" + refinement + "end\n")
@@ -72,9 +75,10 @@ def k_errors(row, reference, n_tips):
     return true, estimated
 
 
-def main(jobs):
+def main(jobs, crown_weight):
     for benchmark, reference, n_tips, n_uniform in BENCHMARKS:
-        print(f"\n{benchmark} (topological, crown 0.1 to 0.3)\n")
+        print(f"\n{benchmark} (topological, crown 0.1 to 0.3, "
+              f"{crown_weight} weight)\n")
         print("| refinement | meshes | cells | DoFs | K error | estimated "
               "| goal met | time (s) |")
         print("|---|---|---|---|---|---|---|---|")
@@ -87,8 +91,8 @@ def main(jobs):
                         "  end\n",
                         f"    set Crown cells = {crown_cells}\n  end\n")))
         with ThreadPoolExecutor(jobs) as pool:
-            results = [pool.submit(run, benchmark, reference, c[1])
-                       for c in cases]
+            results = [pool.submit(run, benchmark, reference, c[1], False,
+                                   crown_weight) for c in cases]
             results = [r.result() for r in results]
         for (label, _), rows in zip(cases, results):
             # Uniform: a row per mesh; k tolerance: its last mesh, the
@@ -147,8 +151,11 @@ if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--picture", action="store_true")
+    parser.add_argument("--crown-weight", choices=["linear", "smooth"],
+                        default="linear",
+                        help="Fracture parameters/Crown weight of every run")
     arguments = parser.parse_args()
     if arguments.picture:
         picture(arguments.jobs)
     else:
-        main(arguments.jobs)
+        main(arguments.jobs, arguments.crown_weight)
