@@ -20,6 +20,7 @@ K_exact - K with the estimate written beside it in front_<step>.csv:
 
     contrib/build.sh release
     /usr/bin/python3 contrib/study_k_error_3d.py [--meshes 5] [--jobs 2]
+        [--crown-weight linear|smooth]  (the reported K's weight)
 
 With --k-tolerance-penny N, instead: the penny under `Strategy = k
 tolerance` (topological enrichment, crown 0.25 to 0.75, tolerance 1 %,
@@ -96,9 +97,12 @@ def k_tolerance_penny(meshes, tolerance, crown_weight):
               f"| {row['goal_met']} |")
 
 
-def main(meshes, jobs):
+def main(meshes, jobs, crown_weight):
+    weight = ("subsection Fracture parameters\n"
+              f"  set Crown weight = {crown_weight}\nend\n")
     with ThreadPoolExecutor(jobs) as pool:
-        results = [pool.submit(run, b, e, meshes) for b, e, _ in BENCHMARKS]
+        results = [pool.submit(run, b, e + weight, meshes)
+                   for b, e, _ in BENCHMARKS]
         results = [r.result() for r in results]
     print("| benchmark | mesh | DoFs | crown cells | mode | max error "
           "| max estimate | ratio | mean error | mean estimate "
@@ -141,4 +145,4 @@ if __name__ == "__main__":
         k_tolerance_penny(arguments.k_tolerance_penny, arguments.tolerance,
                           arguments.crown_weight)
     else:
-        main(arguments.meshes, arguments.jobs)
+        main(arguments.meshes, arguments.jobs, arguments.crown_weight)
