@@ -173,7 +173,43 @@ namespace xcrack
              << crown << " of its cells, " << crown_cells << " asked)";
       const bool met = reliable && ratio <= tolerance;
       text << (met ? ": met" : ": refining");
+      if (reliable && !met)
+        check_progress(ratio);
       return {met, text.str()};
+    }
+
+
+
+    template <int dim>
+    void
+    KTolerance<dim>::check_progress(const double ratio) const
+    {
+      if (progress_step != this->get_step())
+        {
+          progress.clear();
+          progress_step = this->get_step();
+          stalled       = false;
+        }
+      progress.emplace_back(this->get_dof_handler().n_dofs(), ratio);
+      if (stalled || progress.size() < 3)
+        return;
+      const auto [dofs_before, ratio_before] = progress[progress.size() - 3];
+      if (progress.back().first < 2 * dofs_before ||
+          ratio <= 0.8 * ratio_before)
+        return;
+      stalled = true;
+      std::ostringstream text;
+      text << "  Warning: the estimated K error went from "
+           << std::setprecision(3) << 100 * ratio_before << " % to "
+           << 100 * ratio << " % of the largest |K| while the DoFs grew from "
+           << dofs_before << " to " << progress.back().first
+           << ": the refinement does not lower it"
+           << (this->get_fracture_parameters().smooth_weight ?
+                 "" :
+                 "; where the reported K wanders between meshes, Fracture "
+                 "parameters/Crown weight = smooth steadied it")
+           << " (doc/verification.md, \"Along a 3D front\").";
+      this->get_pcout() << text.str() << std::endl;
     }
 
 

@@ -89,12 +89,23 @@ namespace xcrack
       std::pair<double, double>
       distance_to_goal() const;
 
+      /// Says so once per step when the trusted estimates of a step stop
+      /// falling: its last three meshes at least doubled the DoFs and the
+      /// estimate fell by less than a fifth (Q1's rate in 3D would take
+      /// off more than a third).
+      void
+      check_progress(const double ratio) const;
+
       double tolerance        = 0.01;
       double refine_fraction  = 0.5;
       double coarsen_fraction = 0.02;
       double crown_cells      = 8;
       /// Whether the warning on geometric tip zones was printed.
       mutable bool warned = false;
+      /// This step's trusted meshes: (DoFs, estimated K error / |K|).
+      mutable std::vector<std::pair<types::global_dof_index, double>> progress;
+      mutable unsigned int progress_step = 0;
+      mutable bool         stalled       = false;
     };
   } // namespace MeshRefinement
 } // namespace xcrack
