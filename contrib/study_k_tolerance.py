@@ -84,7 +84,7 @@ def main(jobs, crown_weight):
         print("|---|---|---|---|---|---|---|---|")
         cases = [("uniform", f"  set Number of meshes = {n_uniform}\n")]
         for crown_cells in [8, 16]:
-            for tolerance in [1e-2, 3e-3, 1e-3, 3e-4]:
+            for tolerance in [1e-2, 3e-3, 1e-3, 3e-4, 1e-4]:
                 cases.append((
                     f"k tolerance {tolerance:g}, crown cells {crown_cells}",
                     k_tolerance(tolerance).replace(
