@@ -206,8 +206,9 @@ namespace xcrack
            << ": the refinement does not lower it"
            << (this->get_fracture_parameters().smooth_weight ?
                  "" :
-                 "; where the reported K wanders between meshes, Fracture "
-                 "parameters/Crown weight = smooth steadied it")
+                 "; where the largest error sits at the ends of a front on "
+                 "the boundary, Fracture parameters/Crown weight = smooth "
+                 "did better")
            << " (doc/verification.md, \"Along a 3D front\").";
       this->get_pcout() << text.str() << std::endl;
     }

@@ -72,8 +72,9 @@ namespace xcrack
     /// estimate's wide crown always uses it: its dual problems are loaded
     /// by the gradient of q, and a load that jumps from cell to cell or at
     /// the crown's edges gives a dual solution no recovery can see the
-    /// error of. The reported K with it wanders less from one graded mesh
-    /// to the next (doc/verification.md, "Along a 3D front").
+    /// error of. The reported K with it is steadier at the ends of a 3D
+    /// front on faces with Dirichlet data (doc/verification.md, "Along a 3D
+    /// front").
     bool smooth_weight = false;
     /// K_I; K_II (2D) or K_I; K_II; K_III (3D); null if not given.
     std::shared_ptr<Function<2>> reference_2d;

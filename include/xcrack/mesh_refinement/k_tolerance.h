@@ -41,10 +41,10 @@ namespace xcrack
      * So the cells of either crown coarser than its width / `Crown cells`
      * are refined as well, and never coarsened beyond it; and the K's
      * crown must be given as lengths (a crown in cells would shrink with
-     * the tip's cells). Along a 3D front the reported K with the linear
-     * weight still wandered from one mesh to the next by more than the
-     * tight tolerances asked; `Crown weight = smooth` took those runs to
-     * their goal.
+     * the tip's cells). At the ends of a 3D front on the boundary the
+     * reported K with the linear weight falls short of tight tolerances
+     * however the mesh is refined (Case 1 in 3D); `Crown weight = smooth`
+     * comes closer.
      *
      * The goal: max over tips and modes |K_exact - K|_estimated <=
      * Tolerance * max over tips sqrt(K_I^2 + K_II^2 + K_III^2), with both
