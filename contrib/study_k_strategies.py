@@ -189,7 +189,9 @@ if __name__ == "__main__":
     parser.add_argument("--scenes", choices=["2d", "3d", "all"],
                         default="all")
     parser.add_argument("--jobs", type=int, default=2)
-    parser.add_argument("--results", default="k_strategies.json",
+    parser.add_argument("--results",
+                        default=os.path.join(tempfile.gettempdir(),
+                                             "k_strategies.json"),
                         help="where the runs' numbers are kept (JSON)")
     parser.add_argument("--replot", action="store_true",
                         help="only print and draw the kept results")
