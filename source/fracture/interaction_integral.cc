@@ -399,11 +399,14 @@ namespace xcrack
                 const auto projection =
                   curve.project(cell->vertex(v), first, last);
                 const double r = distance_to_foot(projection, cell->vertex(v));
-                // At a hanging vertex, q is its masters' interpolation (any
-                // segment of the front may be nearest to them): q stays
-                // continuous across the faces of coarser neighbours.
-                const auto masters = hanging.masters(cell, v);
-                double     q       = (masters.empty() ? q_of_r(r) : 0.);
+                // At a hanging vertex, the linear q is its masters'
+                // interpolation (any segment of the front may be nearest to
+                // them): q stays continuous across the faces of coarser
+                // neighbours. (A smooth q is evaluated at the points.)
+                std::vector<std::pair<Point<dim>, double>> masters;
+                if (!smooth)
+                  masters = hanging.masters(cell, v);
+                double q = (masters.empty() ? q_of_r(r) : 0.);
                 for (const auto &[x, c] : masters)
                   q += c * q_of_r(distance_to_foot(
                              curve.project(x, 0, std::max(n_segments, 1u)), x));
