@@ -15,11 +15,11 @@ where the run estimates it, the largest estimated error) and draws
 doc/figures/k_error_strategies.png.
 
     contrib/build.sh release
-    /usr/bin/python3 contrib/study_k_strategies.py --scenes 2d   # 1 min
-    /usr/bin/python3 contrib/study_k_strategies.py               # 2D and 3D, 25 min
+    /usr/bin/python3 contrib/study_k_strategies.py --scenes 2d   # 20 s
+    /usr/bin/python3 contrib/study_k_strategies.py               # 2D and 3D, 16 min
 
 The 3D scenes stop at about 300k DoFs: two runs share the machine and the
-direct solver's factorization of a 600k DoF X-FEM matrix needs over 12 GB.
+direct solver's factorization of a 600k DoF X-FEM matrix takes about 12 GB.
 """
 import argparse
 import csv

@@ -253,7 +253,10 @@ namespace xcrack
     const MappingQ1<dim>             mapping;
     constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
 
-    const HangingVertices<dim> hanging(dof_handler.get_triangulation());
+    // Only the linear weight is interpolated from the vertices.
+    std::optional<HangingVertices<dim>> hanging;
+    if (!parameters.smooth_weight)
+      hanging.emplace(dof_handler.get_triangulation());
 
     std::vector<FrontValues<dim>> result;
     for (unsigned int f = 0; f < fronts.size(); ++f)
@@ -404,8 +407,8 @@ namespace xcrack
                 // them): q stays continuous across the faces of coarser
                 // neighbours. (A smooth q is evaluated at the points.)
                 std::vector<std::pair<Point<dim>, double>> masters;
-                if (!smooth)
-                  masters = hanging.masters(cell, v);
+                if (hanging)
+                  masters = hanging->masters(cell, v);
                 double q = (masters.empty() ? q_of_r(r) : 0.);
                 for (const auto &[x, c] : masters)
                   q += c * q_of_r(distance_to_foot(
