@@ -1,15 +1,13 @@
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/base/mpi.h>
 
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values_extractors.h>
 #include <deal.II/fe/mapping_q1.h>
-#include <deal.II/lac/affine_constraints.h>
 
 #include <xcrack/fracture/auxiliary_fields.h>
 #include <xcrack/fracture/front_curve.h>
+#include <xcrack/fracture/hanging_vertices.h>
 #include <xcrack/fracture/integral_derivatives.h>
 #include <xcrack/fracture/interaction_integral.h>
 #include <xcrack/fracture/williams.h>
@@ -144,76 +142,6 @@ namespace xcrack
 
 
 
-  namespace
-  {
-    /**
-     * The hanging vertices of a mesh and the vertices they hang on. The
-     * linear weight q(r) is interpolated from its values at the cells'
-     * vertices; at a vertex that hangs on a coarser neighbour's face or edge
-     * its own value q(r) differs from the neighbour's interpolation by
-     * O(h^2 / (r (r_sup - r_inf))), so q jumps across that face and the
-     * domain form of the interaction integral (q in H^1) loses a face term:
-     * K then moved with every refinement inside the crown that left hanging
-     * faces there. A hanging vertex takes its masters' interpolation of q
-     * instead (the hanging-node constraints of a Q1 field). The factors
-     * along the front, psi_j(s) e1, stay the vertex's own: taken from the
-     * masters they vary across the front within r_inf, where the integrand
-     * is singular (doc/verification.md, "q across hanging faces").
-     */
-    template <int dim>
-    class HangingVertices
-    {
-    public:
-      explicit HangingVertices(const Triangulation<dim> &triangulation)
-        : fe(1)
-        , dof_handler(triangulation)
-      {
-        dof_handler.distribute_dofs(fe);
-        IndexSet relevant;
-        DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-        constraints.reinit(relevant);
-        DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-        constraints.close();
-        if (constraints.n_constraints() > 0)
-          DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
-                                               dof_handler,
-                                               support_points);
-      }
-
-      /**
-       * The vertices vertex v of the cell hangs on, with their weights;
-       * empty where it does not hang.
-       */
-      template <typename CellIterator>
-      std::vector<std::pair<Point<dim>, double>>
-      masters(const CellIterator &cell, const unsigned int v) const
-      {
-        std::vector<std::pair<Point<dim>, double>> result;
-        if (constraints.n_constraints() == 0)
-          return result;
-        const typename DoFHandler<dim>::active_cell_iterator q1_cell(
-          &dof_handler.get_triangulation(),
-          cell->level(),
-          cell->index(),
-          &dof_handler);
-        const types::global_dof_index dof = q1_cell->vertex_dof_index(v, 0);
-        if (constraints.is_constrained(dof))
-          for (const auto &[master, weight] :
-               *constraints.get_constraint_entries(dof))
-            result.emplace_back(support_points.at(master), weight);
-        return result;
-      }
-
-    private:
-      const FE_Q<dim>                               fe;
-      DoFHandler<dim>                               dof_handler;
-      AffineConstraints<double>                     constraints;
-      std::map<types::global_dof_index, Point<dim>> support_points;
-    };
-  } // namespace
-
-
-
   template <int dim>
   InteractionIntegral<dim>::InteractionIntegral(
     const FractureParameters &parameters,
@@ -257,6 +185,13 @@ namespace xcrack
     std::optional<HangingVertices<dim>> hanging;
     if (!parameters.smooth_weight)
       hanging.emplace(dof_handler.get_triangulation());
+    // The distance of x from the front, in the normal plane of its foot.
+    const auto distance_to_foot =
+      [](const typename FrontCurve<dim>::Projection &projection,
+         const Point<dim>                           &x) {
+        const Tensor<1, dim> xl = projection.R * (x - projection.foot);
+        return std::hypot(xl[0], xl[1]);
+      };
 
     std::vector<FrontValues<dim>> result;
     for (unsigned int f = 0; f < fronts.size(); ++f)
@@ -390,12 +325,6 @@ namespace xcrack
                       faces.push_back(face);
               return faces;
             };
-            const auto distance_to_foot =
-              [](const typename FrontCurve<dim>::Projection &projection,
-                 const Point<dim>                           &x) {
-                const Tensor<1, dim> xl = projection.R * (x - projection.foot);
-                return std::hypot(xl[0], xl[1]);
-              };
             double q_min = 1, q_max = 0;
             for (const unsigned int v : cell->vertex_indices())
               {
