@@ -116,18 +116,19 @@ namespace xcrack
     const std::string pinned_text     = prm.get("Pinned points");
     prm.leave_subsection();
 
-    const std::string section = "Boundary conditions/";
+    section                  = "Boundary conditions";
+    const std::string prefix = section + "/";
     dirichlet.clear();
     neumann.clear();
     dirichlet_mask.clear();
 
     for (const auto &[id, expr] :
-         parse_id_map(dirichlet_text, section + "Dirichlet"))
+         parse_id_map(dirichlet_text, prefix + "Dirichlet"))
       {
         if (expr == "exact")
           {
             check_input(exact_solution != nullptr,
-                        section + "Dirichlet: boundary " + std::to_string(id) +
+                        prefix + "Dirichlet: boundary " + std::to_string(id) +
                           " takes the exact solution, but the file gives "
                           "none (subsection Exact solution).");
             dirichlet[id] = exact_solution;
@@ -137,14 +138,14 @@ namespace xcrack
             expr,
             dim,
             constants,
-            section + "Dirichlet (boundary " + std::to_string(id) + ")");
+            prefix + "Dirichlet (boundary " + std::to_string(id) + ")");
         dirichlet_mask[id] = ComponentMask(dim, true);
       }
 
     for (const auto &[id, letters] :
-         parse_id_map(mask_text, section + "Dirichlet components"))
+         parse_id_map(mask_text, prefix + "Dirichlet components"))
       {
-        const std::string entry = section + "Dirichlet components";
+        const std::string entry = prefix + "Dirichlet components";
         check_input(dirichlet.count(id) == 1,
                     entry + ": boundary id " + std::to_string(id) +
                       " has no Dirichlet data.");
@@ -169,12 +170,12 @@ namespace xcrack
       }
 
     for (const auto &[id, expr] :
-         parse_id_map(neumann_text, section + "Neumann"))
+         parse_id_map(neumann_text, prefix + "Neumann"))
       neumann[id] = std::make_unique<ParsedVectorFunction<dim>>(
         expr,
         dim,
         constants,
-        section + "Neumann (boundary " + std::to_string(id) + ")");
+        prefix + "Neumann (boundary " + std::to_string(id) + ")");
 
     // A boundary with both kinds of data is fine only if the traction acts
     // on the components the displacement leaves free (a roller with a
@@ -184,37 +185,37 @@ namespace xcrack
     for (const auto &[id, f] : neumann)
       check_input(dirichlet.count(id) == 0 ||
                     dirichlet_mask.at(id).n_selected_components() < dim,
-                  section + "Dirichlet and " + section +
-                    "Neumann: boundary id " + std::to_string(id) +
+                  prefix + "Dirichlet and " + prefix + "Neumann: boundary id " +
+                    std::to_string(id) +
                     " has both a full displacement and a traction; the "
                     "traction would be ignored.");
 
     body_force.reset();
     if (!Utilities::trim(body_force_text).empty())
       body_force = std::make_unique<ParsedVectorFunction<dim>>(
-        body_force_text, dim, constants, section + "Body force");
+        body_force_text, dim, constants, prefix + "Body force");
     pinned.clear();
     for (const std::string &item : split_and_trim(pinned_text, '|'))
       {
         const auto colon = item.find(':');
         check_input(colon != std::string::npos,
-                    section + "Pinned points: item '" + item +
+                    prefix + "Pinned points: item '" + item +
                       "' is not of the form 'x, y[, z]: letters'.");
         const Point<dim> p(
-          parse_vector<dim>(item.substr(0, colon), section + "Pinned points"));
+          parse_vector<dim>(item.substr(0, colon), prefix + "Pinned points"));
         ComponentMask     mask(dim, false);
         const std::string letters = Utilities::trim(item.substr(colon + 1));
         for (const char c : letters)
           {
             const auto d = std::string("xyz").find(c);
             check_input(d != std::string::npos && d < dim,
-                        section + "Pinned points: item '" + item +
+                        prefix + "Pinned points: item '" + item +
                           "': components are letters among " +
                           std::string("xyz").substr(0, dim) + ".");
             mask.set(d, true);
           }
         check_input(mask.n_selected_components() > 0,
-                    section + "Pinned points: item '" + item +
+                    prefix + "Pinned points: item '" + item +
                       "' names no component.");
         pinned.emplace_back(p, mask);
       }
@@ -222,7 +223,112 @@ namespace xcrack
     lip_pressure.reset();
     if (!Utilities::trim(pressure_text).empty())
       lip_pressure = std::make_unique<ParsedVectorFunction<dim>>(
-        pressure_text, 1, constants, section + "Lip pressure");
+        pressure_text, 1, constants, prefix + "Lip pressure");
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::declare_load_set(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dirichlet",
+                      "",
+                      Patterns::Anything(),
+                      "Prescribed displacements, items 'id: ux; uy[; uz]' "
+                      "separated by '|', on boundaries of Boundary "
+                      "conditions/Dirichlet (the same components are held; "
+                      "a boundary not listed holds zero displacement).");
+    prm.declare_entry("Neumann",
+                      "",
+                      Patterns::Anything(),
+                      "Tractions, items 'id: tx; ty[; tz]' separated by '|'.");
+    prm.declare_entry("Body force",
+                      "",
+                      Patterns::Anything(),
+                      "Force per volume 'fx; fy[; fz]'; empty for none.");
+    prm.declare_entry("Lip pressure",
+                      "",
+                      Patterns::Anything(),
+                      "Pressure on both lips of every crack, an expression "
+                      "of x, y[, z]; empty for none.");
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::parse_load_set(ParameterHandler         &prm,
+                                          const std::string        &set,
+                                          const BoundaryConditions &supports,
+                                          const FunctionConstants  &constants)
+  {
+    section                  = set;
+    const std::string prefix = section + "/";
+    dirichlet.clear();
+    neumann.clear();
+    dirichlet_mask = supports.dirichlet_mask;
+    pinned         = supports.pinned;
+    given          = false;
+    for (const auto &[id, expr] :
+         parse_id_map(prm.get("Dirichlet"), prefix + "Dirichlet"))
+      {
+        check_input(supports.dirichlet.count(id) == 1,
+                    prefix + "Dirichlet: boundary " + std::to_string(id) +
+                      " is not a Dirichlet boundary of " + supports.section +
+                      "/Dirichlet (the supports are the same at every "
+                      "instant of the load cycle; only their values "
+                      "change).");
+        dirichlet[id] = std::make_shared<ParsedVectorFunction<dim>>(
+          expr,
+          dim,
+          constants,
+          prefix + "Dirichlet (boundary " + std::to_string(id) + ")");
+        given = true;
+      }
+    for (const auto &[id, function] : supports.dirichlet)
+      if (dirichlet.count(id) == 0)
+        dirichlet[id] = std::make_shared<Functions::ZeroFunction<dim>>(dim);
+    for (const auto &[id, expr] :
+         parse_id_map(prm.get("Neumann"), prefix + "Neumann"))
+      {
+        check_input(dirichlet_mask.count(id) == 0 ||
+                      dirichlet_mask.at(id).n_selected_components() < dim,
+                    prefix + "Neumann: boundary id " + std::to_string(id) +
+                      " has a full displacement (" + supports.section +
+                      "/Dirichlet); the traction would be ignored.");
+        neumann[id] = std::make_unique<ParsedVectorFunction<dim>>(
+          expr,
+          dim,
+          constants,
+          prefix + "Neumann (boundary " + std::to_string(id) + ")");
+        given = true;
+      }
+    body_force.reset();
+    if (const std::string text = prm.get("Body force");
+        !Utilities::trim(text).empty())
+      {
+        body_force = std::make_unique<ParsedVectorFunction<dim>>(
+          text, dim, constants, prefix + "Body force");
+        given = true;
+      }
+    lip_pressure.reset();
+    if (const std::string text = prm.get("Lip pressure");
+        !Utilities::trim(text).empty())
+      {
+        lip_pressure = std::make_unique<ParsedVectorFunction<dim>>(
+          text, 1, constants, prefix + "Lip pressure");
+        given = true;
+      }
+  }
+
+
+
+  template <int dim>
+  bool
+  BoundaryConditions<dim>::empty() const
+  {
+    return !given;
   }
 
 
@@ -251,7 +357,7 @@ namespace xcrack
     const auto check = [&](const auto &map, const std::string &entry) {
       for (const auto &[id, f] : map)
         check_input(ids.count(id) == 1,
-                    "Boundary conditions/" + entry + ": boundary id " +
+                    section + "/" + entry + ": boundary id " +
                       std::to_string(id) +
                       " does not exist on the mesh (its ids are " + known +
                       ").");
@@ -324,7 +430,7 @@ namespace xcrack
             for (const auto &q : cell_rule.get_points())
               look(*body_force,
                    mapping.transform_unit_to_real_cell(cell, q),
-                   "Boundary conditions/Body force",
+                   section + "/Body force",
                    force_max);
           if (lip_pressure)
             for (const unsigned int v : cell->vertex_indices())
@@ -354,8 +460,8 @@ namespace xcrack
                 for (const auto &x : points)
                   look(*d->second,
                        x,
-                       "Boundary conditions/Dirichlet (boundary " +
-                         std::to_string(id) + ")",
+                       section + "/Dirichlet (boundary " + std::to_string(id) +
+                         ")",
                        dirichlet_max,
                        dirichlet_mask.at(id));
               const auto n = neumann.find(id);
@@ -364,8 +470,8 @@ namespace xcrack
                      ++i)
                   look(*n->second,
                        points[i],
-                       "Boundary conditions/Neumann (boundary " +
-                         std::to_string(id) + ")",
+                       section + "/Neumann (boundary " + std::to_string(id) +
+                         ")",
                        traction_max);
             }
         }

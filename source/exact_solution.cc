@@ -18,6 +18,11 @@ namespace xcrack
      * along the crack. sqrt(z^2 - a^2) = sqrt(z - a) sqrt(z + a) with
      * principal roots has its cut on the crack only. Displacements from
      * 2 mu u = ... (Tada, Paris and Irwin; Anderson, section A2.3).
+     *
+     * With @p closed lips (frictionless contact under a compressive
+     * sigma'_yy) the crack transmits sigma'_yy: Z_I is replaced by the
+     * uniform biaxial sigma'_yy it tends to at infinity, and only the
+     * shear slides the lips (K_I = 0, K_II = sigma'_xy sqrt(pi a)).
      */
     template <int dim>
     class GriffithSolution : public Function<dim>
@@ -28,13 +33,15 @@ namespace xcrack
                        const double               a,
                        const std::vector<double> &remote,
                        const double               mu,
-                       const double               kappa)
+                       const double               kappa,
+                       const bool                 closed)
         : Function<dim>(dim)
         , centre(centre)
         , t(direction)
         , a(a)
         , mu(mu)
         , kappa(kappa)
+        , closed(closed)
       {
         n[0] = -t[1];
         n[1] = t[0];
@@ -44,9 +51,10 @@ namespace xcrack
           return u[0] * (sxx * v[0] + sxy * v[1]) +
                  u[1] * (sxy * v[0] + syy * v[1]);
         };
-        s_tt = project(t, t);
-        s_nn = project(n, n);
-        s_tn = project(t, n);
+        s_tt   = project(t, t);
+        s_nn   = project(n, n);
+        s_tn   = project(t, n);
+        s_open = (closed ? 0. : s_nn);
       }
 
       double
@@ -59,10 +67,16 @@ namespace xcrack
         const C            root = std::sqrt(z - a) * std::sqrt(z + a);
         const C            Z = z / root, Zbar = root;
         // Local displacements (u'_x, u'_y) times 2 mu.
-        double ux = s_nn * (0.5 * (kappa - 1) * Zbar.real() - y * Z.imag()) +
+        double ux = s_open * (0.5 * (kappa - 1) * Zbar.real() - y * Z.imag()) +
                     s_tn * (0.5 * (kappa + 1) * Zbar.imag() + y * Z.real());
-        double uy = s_nn * (0.5 * (kappa + 1) * Zbar.imag() - y * Z.real()) +
+        double uy = s_open * (0.5 * (kappa + 1) * Zbar.imag() - y * Z.real()) +
                     s_tn * (-0.5 * (kappa - 1) * Zbar.real() - y * Z.imag());
+        // Closed: the uniform biaxial sigma'_yy instead of Z_I's.
+        if (closed)
+          {
+            ux += 0.5 * (kappa - 1) * s_nn * x;
+            uy += 0.5 * (kappa - 1) * s_nn * y;
+          }
         // Uniform sigma'_xx - sigma'_yy: eps_xx = (kappa + 1)/(8 mu) s,
         // eps_yy = (kappa - 3)/(8 mu) s, times 2 mu.
         const double s = s_tt - s_nn;
@@ -87,17 +101,23 @@ namespace xcrack
         const double       k = kappa, s = s_tt - s_nn;
         // Local gradient G[i][j] = d u'_i / d x'_j, times 2 mu.
         Tensor<2, 2> G;
-        G[0][0] = s_nn * (0.5 * (k - 1) * Z.real() - y * dZ.imag()) +
+        G[0][0] = s_open * (0.5 * (k - 1) * Z.real() - y * dZ.imag()) +
                   s_tn * (0.5 * (k + 1) * Z.imag() + y * dZ.real()) +
                   0.25 * (k + 1) * s;
         G[0][1] =
-          s_nn * (-0.5 * (k - 1) * Z.imag() - Z.imag() - y * dZ.real()) +
+          s_open * (-0.5 * (k - 1) * Z.imag() - Z.imag() - y * dZ.real()) +
           s_tn * (0.5 * (k + 1) * Z.real() + Z.real() - y * dZ.imag());
-        G[1][0] = s_nn * (0.5 * (k + 1) * Z.imag() - y * dZ.real()) +
+        G[1][0] = s_open * (0.5 * (k + 1) * Z.imag() - y * dZ.real()) +
                   s_tn * (-0.5 * (k - 1) * Z.real() - y * dZ.imag());
-        G[1][1] = s_nn * (0.5 * (k + 1) * Z.real() - Z.real() + y * dZ.imag()) +
-                  s_tn * (0.5 * (k - 1) * Z.imag() - Z.imag() - y * dZ.real()) +
-                  0.25 * (k - 3) * s;
+        G[1][1] =
+          s_open * (0.5 * (k + 1) * Z.real() - Z.real() + y * dZ.imag()) +
+          s_tn * (0.5 * (k - 1) * Z.imag() - Z.imag() - y * dZ.real()) +
+          0.25 * (k - 3) * s;
+        if (closed)
+          {
+            G[0][0] += 0.5 * (k - 1) * s_nn;
+            G[1][1] += 0.5 * (k - 1) * s_nn;
+          }
         // Global: d u_c / d x_j = sum R[i][c] G[i][l] R[l][j], R rows t, n.
         const Tensor<1, 2> rows[2] = {t, n};
         Tensor<1, dim>     g;
@@ -112,7 +132,10 @@ namespace xcrack
       Point<dim>   centre;
       Tensor<1, 2> t, n;
       double       a, mu, kappa;
+      bool         closed;
       double       s_tt = 0, s_nn = 0, s_tn = 0;
+      /// sigma'_yy where Z_I carries it (open lips), else 0.
+      double s_open = 0;
     };
   } // namespace
 
@@ -141,6 +164,13 @@ namespace xcrack
                         Patterns::Anything(),
                         "griffith: sigma_xx, sigma_yy, sigma_xy at infinity "
                         "(global axes).");
+      prm.declare_entry("Lips",
+                        "open",
+                        Patterns::Selection("open|closed"),
+                        "griffith: open (traction-free lips), or closed: "
+                        "frictionless lips in contact under a compressive "
+                        "normal stress, which the crack transmits (K_I = 0; "
+                        "the shear slides them).");
       prm.declare_entry("Displacement",
                         "",
                         Patterns::Anything(),
@@ -186,6 +216,7 @@ namespace xcrack
     const std::string normal       = prm.get("Crack normal");
     const double      half_length  = prm.get_double("Half-length");
     const std::string remote       = prm.get("Remote stress");
+    const bool        closed       = (prm.get("Lips") == "closed");
     prm.leave_subsection();
 
     if (type == "griffith")
@@ -196,13 +227,23 @@ namespace xcrack
           parse_numbers(remote, 3, section + "Remote stress");
         Tensor<1, 2> t = parse_vector<2>(direction, section + "Tip direction");
         check_input(t.norm() > 0, section + "Tip direction is zero.");
+        t /= t.norm();
+        // The normal stress on the crack must press closed lips together.
+        const double s_nn = t[1] * t[1] * sigma[0] -
+                            2 * t[0] * t[1] * sigma[2] + t[0] * t[0] * sigma[1];
+        check_input(!closed || s_nn <= 0,
+                    section +
+                      "Lips = closed, but the remote stress pulls "
+                      "the lips apart (normal stress " +
+                      std::to_string(s_nn) + " > 0 on the crack).");
         return std::make_shared<GriffithSolution<dim>>(
           Point<dim>(parse_vector<dim>(tip, section + "Tip")),
-          t / t.norm(),
+          t,
           half_length,
           sigma,
           material.mu(),
-          material.kappa(dim));
+          material.kappa(dim),
+          closed);
       }
 
     if (type == "parsed")

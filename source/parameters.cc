@@ -4,7 +4,7 @@
 #include <xcrack/crack/crack_set.h>
 #include <xcrack/exact_solution.h>
 #include <xcrack/input_error.h>
-#include <xcrack/linear_solver.h>
+#include <xcrack/linear_solver/interface.h>
 #include <xcrack/material.h>
 #include <xcrack/mesh.h>
 #include <xcrack/parameters.h>
@@ -119,7 +119,9 @@ namespace xcrack
     // The declarations do not depend on the dimension.
     BoundaryConditions<3>::declare_parameters(prm);
     CrackSet<3>::declare_parameters(prm);
+    prm.enter_subsection("Linear solver");
     LinearSolver::declare_parameters(prm);
+    prm.leave_subsection();
     Simulator<3>::declare_parameters(prm);
     ExactSolution::declare_parameters(prm);
   }

@@ -1,4 +1,5 @@
 #include <xcrack/input_error.h>
+#include <xcrack/load_cycle.h>
 #include <xcrack/material.h>
 #include <xcrack/propagation.h>
 
@@ -29,11 +30,7 @@ namespace xcrack
         "path converge as it shrinks; where the crack turns, keep it at "
         "least the crowns' outer radius (Fracture parameters/Crown radii): "
         "a kink shorter than the crowns is read wrong.");
-      prm.declare_entry("Load ratio",
-                        "0",
-                        Patterns::Double(),
-                        "R = K_min / K_max of the load cycle (< 1); the "
-                        "loads of the file are the maximum.");
+      LoadCycle<dim>::declare_parameters(prm);
       prm.declare_entry(
         "Equivalent K",
         "energy release rate",
@@ -78,21 +75,17 @@ namespace xcrack
   Propagation<dim>::parse_parameters(ParameterHandler &prm)
   {
     const Plugins::ScopedSubsection scope(prm, "Propagation");
-    steps        = prm.get_integer("Number of steps");
-    advance      = prm.get_double("Maximum advance");
-    load_ratio   = prm.get_double("Load ratio");
-    equivalent_k = (prm.get("Equivalent K") == "criterion" ?
-                      EquivalentK::criterion :
-                      EquivalentK::energy_release_rate);
-    add_mode_III = (prm.get("Mode III") == "added");
+    steps             = prm.get_integer("Number of steps");
+    advance           = prm.get_double("Maximum advance");
+    equivalent_k_type = (prm.get("Equivalent K") == "criterion" ?
+                           EquivalentK::criterion :
+                           EquivalentK::energy_release_rate);
+    add_mode_III      = (prm.get("Mode III") == "added");
     predictor_corrector =
       (prm.get("Direction integration") == "predictor-corrector");
     check_input(steps == 0 || advance > 0,
                 "Propagation/Maximum advance = " + prm.get("Maximum advance") +
                   ": must be positive when Number of steps > 0.");
-    check_input(load_ratio < 1,
-                "Propagation/Load ratio = " + prm.get("Load ratio") +
-                  ": must be below 1 (R = K_min / K_max).");
     // The plugins only when the cracks grow: a static analysis need not
     // give a growth law its constants.
     if (steps == 0)
@@ -151,46 +144,77 @@ namespace xcrack
 
 
   template <int dim>
+  double
+  Propagation<dim>::equivalent_k(const double k_I,
+                                 const double k_II,
+                                 const double k_III) const
+  {
+    const Material &material = this->get_material();
+    if (equivalent_k_type == EquivalentK::energy_release_rate)
+      // sqrt(E' G), G by Irwin's relation (E' / (2 mu) = 1 / (1 - nu) in
+      // plane strain and 3D).
+      return std::sqrt(k_I * k_I + k_II * k_II +
+                       material.e_prime(dim) / (2 * material.mu()) * k_III *
+                         k_III);
+    const double k = direction_criterion->equivalent_k(k_I, k_II);
+    return (add_mode_III ?
+              std::sqrt(k * k + k_III * k_III / (1 - material.poisson_ratio)) :
+              k);
+  }
+
+
+
+  template <int dim>
   std::vector<FrontMove<dim>>
-  Propagation<dim>::moves(const std::vector<FrontValues<dim>> &values,
+  Propagation<dim>::moves(const std::vector<FrontValues<dim>> &maximum,
+                          const std::vector<FrontValues<dim>> &minimum,
                           const std::vector<unsigned int>     &fronts_per_crack,
                           const double largest_advance) const
   {
     Assert(enabled(), ExcInternalError());
-    const Material             &material = this->get_material();
-    const double                e_prime  = material.e_prime(dim);
-    const double                r        = std::max(load_ratio, 0.);
+    AssertDimension(maximum.size(), minimum.size());
     std::vector<FrontMove<dim>> result;
-    for (const FrontValues<dim> &v : values)
+    for (unsigned int i = 0; i < maximum.size(); ++i)
       {
-        FrontMove<dim> m;
+        const FrontValues<dim> &v = maximum[i];
+        const FrontValues<dim> &w = minimum[i];
+        FrontMove<dim>          m;
         m.front = v.front;
         while (m.crack < fronts_per_crack.size() &&
                m.front >= fronts_per_crack[m.crack])
           m.front -= fronts_per_crack[m.crack++];
-        m.point         = v.point;
-        const double kI = std::max(v.k_I, 0.);
+        m.point = v.point;
+        // A closed crack carries no K_I (without contact, a negative K_I
+        // is lips passing through each other; with contact, a closed
+        // point's K_I is the error of its lip term).
+        const auto k_I_of = [](const FrontValues<dim> &values) {
+          return (values.closed ? 0. : std::max(values.k_I, 0.));
+        };
+        const double kI = k_I_of(v);
         m.angle         = direction_criterion->kink_angle(kI, v.k_II);
         if (std::abs(m.angle) < minimum_kink_angle)
           m.angle = 0;
-        // Irwin's G from the interaction integral's K's, the more accurate
-        // of the two extractions (G-theta is the cross-check).
-        if (equivalent_k == EquivalentK::energy_release_rate)
-          m.k_eq = std::sqrt(std::max(e_prime * v.g_irwin, 0.));
-        else
-          {
-            m.k_eq = direction_criterion->equivalent_k(kI, v.k_II);
-            if (add_mode_III)
-              m.k_eq =
-                std::sqrt(m.k_eq * m.k_eq +
-                          v.k_III * v.k_III / (1 - material.poisson_ratio));
-          }
-        m.delta_k = (1 - r) * m.k_eq;
-        m.rate    = growth_law->rate(m.delta_k, m.k_eq, load_ratio);
+        m.k_minimum = {{w.k_I, w.k_II, w.k_III}};
+        m.k_eq      = equivalent_k(kI, v.k_II, v.k_III);
+        // The range over the cycle, mode by mode: of a proportional cycle
+        // with R >= 0 it is (1 - R) K_eq, as the equivalent K is of
+        // degree one in the K's.
+        m.delta_k = std::abs(
+          equivalent_k(kI - k_I_of(w), v.k_II - w.k_II, v.k_III - w.k_III));
+        m.rate = growth_law->rate(m.delta_k, m.k_eq, load_ratio_of(m));
         result.push_back(m);
       }
     scale_advances(result, largest_advance);
     return result;
+  }
+
+
+
+  template <int dim>
+  double
+  Propagation<dim>::load_ratio_of(const FrontMove<dim> &move)
+  {
+    return (move.k_eq > 0 ? 1 - move.delta_k / move.k_eq : 0.);
   }
 
 
@@ -286,12 +310,13 @@ namespace xcrack
           weights += w;
           growth += w * k_eq_at(m.new_position(), m.crack, now) / m.k_eq;
         }
-    const double r            = std::max(load_ratio, 0.);
+    // The ratio of Delta K to K_max stays that of the step's start.
+    const double r            = load_ratio_of(before);
     const double k0           = before.k_eq;
     const double k1           = k0 * growth / weights;
     const auto   inverse_rate = [&](const double t) {
       const double k    = std::sqrt((1 - t) * k0 * k0 + t * k1 * k1);
-      const double rate = growth_law->rate((1 - r) * k, k, load_ratio);
+      const double rate = growth_law->rate((1 - r) * k, k, r);
       return (rate > 0 ? 1 / rate : std::numeric_limits<double>::infinity());
     };
     // 5-point Gauss-Legendre on [0, 1].
@@ -433,6 +458,19 @@ namespace xcrack
       k_max = std::max(k_max, m.k_eq);
     const double toughness = this->get_material().fracture_toughness;
     return (k_max > 0 && toughness > 0 ? toughness / k_max : 0.);
+  }
+
+
+
+  template <int dim>
+  std::vector<std::pair<std::string, Plugins::InterfaceBase *>>
+  Propagation<dim>::plugins() const
+  {
+    if (!enabled())
+      return {};
+    return {{"Direction criterion", direction_criterion.get()},
+            {"Growth law", growth_law.get()},
+            {"Level set update", level_set_update.get()}};
   }
 
 

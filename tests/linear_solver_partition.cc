@@ -16,7 +16,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <xcrack/linear_solver.h>
+#include <xcrack/linear_solver/cg_amg.h>
+#include <xcrack/linear_solver/interface.h>
 
 #include <algorithm>
 #include <cmath>
@@ -103,14 +104,20 @@ solve(const std::string &partition, const MPI_Comm comm)
   matrix.compress(VectorOperation::insert);
   rhs.compress(VectorOperation::insert);
 
-  xcrack::LinearSolver solver;
-  solver.type               = "cg amg";
-  solver.partition          = partition;
-  solver.relative_tolerance = 1e-12;
-  const std::vector<std::vector<bool>> modes(
-    1, std::vector<bool>(owned.n_elements(), true));
+  ParameterHandler prm;
+  xcrack::LinearSolver::declare_parameters(prm);
+  prm.set("Type", "cg amg");
+  prm.set("Partition", partition);
+  prm.set("Relative tolerance", "1e-12");
+  xcrack::LinearSolver::CgAmg<2> solver;
+  solver.parse_parameters(prm);
+  const xcrack::LinearSolver::System system{
+    matrix, xcrack::LinearSolver::MatrixProperty::spd, [&]() {
+      return std::vector<std::vector<bool>>(
+        1, std::vector<bool>(owned.n_elements(), true));
+    }};
   Solution solution;
-  solution.iterations_first = solver.solve(matrix, x, rhs, modes);
+  solution.iterations_first = solver.solve(system, x, rhs);
   solution.entries          = solver.n_local_entries();
   // Gathered in the order of the ranks (the first owns the first rows).
   for (const auto &part :

@@ -11,6 +11,7 @@
 
 #include <map>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -50,6 +51,32 @@ namespace xcrack
     parse_parameters(ParameterHandler                     &prm,
                      const FunctionConstants              &constants,
                      const std::shared_ptr<Function<dim>> &exact_solution);
+
+    /**
+     * Declare the entries of another load set of the same scene (in the
+     * current subsection): Dirichlet, Neumann, Body force, Lip pressure.
+     */
+    static void
+    declare_load_set(ParameterHandler &prm);
+
+    /**
+     * Parse another load set of the scene (declare_load_set(), in the
+     * subsection @p prm is in, which @p section names in messages) on the
+     * supports of @p supports: the supports of a body do not change within
+     * a load cycle, so its Dirichlet boundaries, their components and its
+     * pinned points are taken over, and the set gives only values. A
+     * Dirichlet boundary of @p supports that the set does not list holds
+     * zero displacement; the set may list no other.
+     */
+    void
+    parse_load_set(ParameterHandler         &prm,
+                   const std::string        &section,
+                   const BoundaryConditions &supports,
+                   const FunctionConstants  &constants);
+
+    /// Whether the set has no load at all (no entry given).
+    bool
+    empty() const;
 
     /**
      * Check the boundary ids against those of @p triangulation: every id
@@ -92,6 +119,9 @@ namespace xcrack
     check_rigid_body_motions(const Triangulation<dim> &triangulation,
                              const double              size) const;
 
+    /// The subsection these loads come from, for messages.
+    std::string section = "Boundary conditions";
+
     std::map<types::boundary_id, std::shared_ptr<Function<dim>>> dirichlet;
     std::map<types::boundary_id, ComponentMask>                  dirichlet_mask;
     std::map<types::boundary_id, std::unique_ptr<Function<dim>>> neumann;
@@ -100,6 +130,10 @@ namespace xcrack
     std::unique_ptr<Function<dim>> lip_pressure;
     /// Vertices with components held at zero.
     std::vector<std::pair<Point<dim>, ComponentMask>> pinned;
+
+  private:
+    /// Whether some load was given (empty()).
+    bool given = true;
   };
 } // namespace xcrack
 

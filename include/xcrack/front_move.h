@@ -5,6 +5,8 @@
 
 #include <xcrack/crack/crack_geometry.h>
 
+#include <array>
+#include <boost/serialization/array.hpp>
 #include <cmath>
 
 namespace xcrack
@@ -25,6 +27,8 @@ namespace xcrack
     FrontPoint<dim> point;
     /// The equivalent K at the maximum of the load cycle, and its range.
     double k_eq = 0, delta_k = 0;
+    /// K_I, K_II, K_III at the minimum of the load cycle.
+    std::array<double, 3> k_minimum = {{0, 0, 0}};
     /// da/dN (or a relative speed for a quasi-static law).
     double rate = 0;
     /// Kink angle from e1 towards e2 (radians).
@@ -59,8 +63,8 @@ namespace xcrack
     void
     serialize(Archive &archive, const unsigned int)
     {
-      archive &crack &front &point &k_eq &delta_k &rate &angle &advance
-        &catch_up;
+      archive &crack &front &point &k_eq &delta_k &k_minimum &rate &angle
+        &advance &catch_up;
     }
   };
 } // namespace xcrack

@@ -2,11 +2,17 @@
 #define xcrack_plugins_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
 
 #include <xcrack/input_error.h>
 
 #include <algorithm>
+#include <boost/serialization/map.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,9 +38,13 @@ namespace xcrack
    */
   namespace Plugins
   {
+    /// What a plugin keeps across steps, as named strings (save(), load()).
+    using State = std::map<std::string, std::string>;
+
     /**
-     * What every plugin has: parameters of its own, and a start-up hook
-     * called once the simulator's state can be read (see SimulatorAccess).
+     * What every plugin has: parameters of its own, a start-up hook called
+     * once the simulator's state can be read (see SimulatorAccess), and the
+     * state it keeps across steps, written with each checkpoint.
      */
     class InterfaceBase
     {
@@ -55,7 +65,61 @@ namespace xcrack
       virtual void
       initialize()
       {}
+
+      /**
+       * Write what the plugin has learnt during the run (counters, initial
+       * values, statuses, history) into @p state, for the checkpoint: a run
+       * resumed from it must go on as the one that wrote it (ASPECT's
+       * save()/load()). Plugins without such state write nothing.
+       */
+      virtual void
+      save(State & /*state*/) const
+      {}
+
+      /// Restore what save() wrote (on `--resume`, before the first step).
+      virtual void
+      load(const State & /*state*/)
+      {}
+
+      /// The name the plugin was registered and selected by.
+      const std::string &
+      plugin_name() const
+      {
+        return name;
+      }
+
+    private:
+      std::string name;
+
+      template <typename>
+      friend class PluginList;
     };
+
+
+
+    /// @p object as bytes in a string, for a plugin's State (any type that
+    /// boost serialization or a plain copy can write).
+    template <typename T>
+    std::string
+    pack(const T &object)
+    {
+      const std::vector<char> bytes = Utilities::pack(object, false);
+      return std::string(bytes.begin(), bytes.end());
+    }
+
+    /// The object that pack() wrote under @p key of @p state; @p fallback
+    /// if there is none.
+    template <typename T>
+    T
+    unpack(const State &state, const std::string &key, const T &fallback)
+    {
+      const auto it = state.find(key);
+      if (it == state.end())
+        return fallback;
+      return Utilities::unpack<T>(std::vector<char>(it->second.begin(),
+                                                    it->second.end()),
+                                  false);
+    }
 
 
 
@@ -129,7 +193,11 @@ namespace xcrack
       {
         for (const Entry &e : entries())
           if (e.name == name)
-            return e.create();
+            {
+              std::unique_ptr<InterfaceType> plugin = e.create();
+              plugin->name                          = name;
+              return plugin;
+            }
         throw InputError(entry + " = " + name +
                          ": no such plugin (known: " + pattern() + ").");
       }

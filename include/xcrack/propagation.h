@@ -22,19 +22,22 @@ namespace xcrack
    * stress intensity factors along the fronts of a step to the move of
    * every front point, the load cycles that take, and the new level sets.
    *
-   * Per point, with K_I taken as max(K_I, 0) (a closed crack does not
-   * open): the kink angle of the `Direction criterion`; the equivalent K
-   * at the maximum of the load cycle, sqrt(E' G) with Irwin's G from the
-   * extracted K's (`Equivalent K = energy release rate`, mode III included
-   * as the energy includes it; the interaction integral's K's are more
-   * accurate than the G-theta integral, which stays a cross-check) or the
-   * criterion's own (`criterion`, K_III added as K_III^2 / (1 - nu) to K_eq^2
-   * if `Mode III = added`, else ignored); the range Delta K = (1 - R) K_eq for
-   * the `Load ratio` R >= 0 (proportional loading: one solve at the maximum
-   * load gives the whole cycle; a compressive minimum, R < 0, closes the crack
-   * and counts as R = 0); the rate da/dN of the `Growth law`. The cycle
-   * increment is the one in which the fastest point of all fronts of all cracks
-   * advances `Maximum advance`; every other point advances in proportion to its
+   * Per point, from its K's at the maximum and the minimum of the load
+   * cycle (LoadCycle), with K_I taken as max(K_I, 0) in each (a closed
+   * crack does not open): the kink angle of the `Direction criterion` at
+   * the maximum; the equivalent K at the maximum, sqrt(E' G) with Irwin's G
+   * from the extracted K's (`Equivalent K = energy release rate`, mode III
+   * included as the energy includes it; the interaction integral's K's are
+   * more accurate than the G-theta integral, which stays a cross-check) or
+   * the criterion's own (`criterion`, K_III added as K_III^2 / (1 - nu) to
+   * K_eq^2 if `Mode III = added`, else ignored); its range Delta K, the same
+   * equivalent K of the ranges of the three modes (for a proportional cycle
+   * with R >= 0, (1 - R) K_eq; with R < 0 and no contact, the compressive
+   * part of the cycle adds nothing to mode I, while K_II and K_III range
+   * over the whole cycle); the rate da/dN of the `Growth law`, with the
+   * point's ratio 1 - Delta K / K_max as its R. The cycle increment is the
+   * one in which the fastest point of all fronts of all cracks advances
+   * `Maximum advance`; every other point advances in proportion to its
    * rate.
    *
    * Mode III does not twist the front: the kink is a rotation about the
@@ -81,14 +84,26 @@ namespace xcrack
     counts_cycles() const;
 
     /**
-     * The moves of the points of @p values (K at the points of every
-     * front of every crack, fronts numbered crack after crack as in
-     * @p fronts_per_crack), the fastest advancing @p largest_advance.
+     * The moves of the points of @p maximum (K at the points of every
+     * front of every crack at the maximum of the load cycle, fronts
+     * numbered crack after crack as in @p fronts_per_crack), whose K's at
+     * the minimum are @p minimum (the same points), the fastest advancing
+     * @p largest_advance.
      */
     std::vector<FrontMove<dim>>
-    moves(const std::vector<FrontValues<dim>> &values,
+    moves(const std::vector<FrontValues<dim>> &maximum,
+          const std::vector<FrontValues<dim>> &minimum,
           const std::vector<unsigned int>     &fronts_per_crack,
           const double                         largest_advance) const;
+
+    /// The equivalent K of the modes' K's (or ranges) @p k_I (>= 0 at a
+    /// point that opens), @p k_II, @p k_III, as `Equivalent K` says.
+    double
+    equivalent_k(const double k_I, const double k_II, const double k_III) const;
+
+    /// The load ratio a growth law sees at @p move: 1 - Delta K / K_max.
+    static double
+    load_ratio_of(const FrontMove<dim> &move);
 
     /**
      * Kink angles below this (radians) are taken as zero. A symmetric
@@ -178,6 +193,11 @@ namespace xcrack
     double
     load_factor(const std::vector<FrontMove<dim>> &moves) const;
 
+    /// The plugins of the growth model with their systems' names (for the
+    /// checkpoint of their states); none in a static analysis.
+    std::vector<std::pair<std::string, Plugins::InterfaceBase *>>
+    plugins() const;
+
   private:
     /// The cycles in which the fastest point of crack @p crack in
     /// @p before_moves advanced, integrated as cycles() does.
@@ -194,8 +214,7 @@ namespace xcrack
 
     unsigned int steps               = 0;
     double       advance             = 0;
-    double       load_ratio          = 0;
-    EquivalentK  equivalent_k        = EquivalentK::energy_release_rate;
+    EquivalentK  equivalent_k_type   = EquivalentK::energy_release_rate;
     bool         add_mode_III        = false;
     bool         predictor_corrector = false;
     std::unique_ptr<DirectionCriterion::Interface<dim>> direction_criterion;

@@ -16,17 +16,21 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/non_matching/immersed_surface_quadrature.h>
 
+#include <xcrack/assembly/interface.h>
 #include <xcrack/boundary_conditions.h>
+#include <xcrack/contact/interface.h>
 #include <xcrack/crack/crack_set.h>
 #include <xcrack/crack/crack_surface.h>
 #include <xcrack/crack/level_set_fields.h>
 #include <xcrack/fracture/interaction_integral.h>
 #include <xcrack/fracture/k_error_estimator.h>
 #include <xcrack/front_move.h>
-#include <xcrack/linear_solver.h>
+#include <xcrack/linear_solver/interface.h>
+#include <xcrack/load_cycle.h>
 #include <xcrack/material.h>
 #include <xcrack/mesh.h>
 #include <xcrack/mesh_refinement/interface.h>
+#include <xcrack/nonlinear_solver.h>
 #include <xcrack/parameters.h>
 #include <xcrack/propagation.h>
 #include <xcrack/run_record.h>
@@ -135,9 +139,17 @@ namespace xcrack
      */
     std::vector<unsigned int>
     cell_work() const;
-    /// Dirichlet and pinned-point constraints, aware of enriched DoFs.
+    /**
+     * The constraints of the space with the Dirichlet data of @p state:
+     * hanging nodes, the enrichment's (gathering along the fronts of
+     * gathering_fronts), Dirichlet and pinned points.
+     */
     void
-    make_dirichlet_constraints();
+    make_constraints(const LoadState<dim> &state);
+    /// Dirichlet and pinned-point constraints of @p state, aware of
+    /// enriched DoFs.
+    void
+    make_dirichlet_constraints(const LoadState<dim> &state);
     /// Enriched DoFs that are not constrained, over all ranks.
     types::global_dof_index
     n_free_enriched_dofs() const;
@@ -145,8 +157,23 @@ namespace xcrack
 
     /// @name Assembly (assembly.cc)
     /// @{
+    /**
+     * The system of @p state linearised at the current iterate (the
+     * solution; zero if @p first): the sum of the contributions'
+     * (Assembly::Contribution), condensed by the constraints.
+     */
     void
-    assemble_system();
+    assemble_system(const LoadState<dim> &state, const bool first);
+
+    /// The contributions of the scene's terms to the system: the bulk's,
+    /// the loads', and contact on the lips if the lips touch.
+    void
+    create_contributions();
+
+    /// What the system's matrix is (symmetric positive definite unless a
+    /// contribution makes it otherwise).
+    LinearSolver::MatrixProperty
+    matrix_property() const;
 
     /**
      * The FEValues of the cells with rules of their own
@@ -177,21 +204,52 @@ namespace xcrack
                      SpecialFEValues   &special_values,
                      const unsigned int n_points_1d) const;
 
-    /**
-     * Add the work of the lip pressure in @p cell to @p cell_rhs: the
-     * integral over the lips in the cell of p n . [[phi_i]], where n points
-     * to the lsn > 0 lip and [[phi_i]] is the jump of the shape function
-     * across the crack (only enriched functions jump). The jumps are taken
-     * from values a hair's breadth off the crack on each side.
-     */
-    void
-    add_lip_pressure(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                     Vector<double> &cell_rhs) const;
     /// @}
 
-    /// Solve the system and distribute the constraints (solve.cc).
+    /// @name The solve (solve.cc)
+    /// @{
+    /// Solve the assembled system for the solution and distribute the
+    /// constraints; returns the linear solver's iterations.
     unsigned int
     solve();
+
+    /// (|b - A u|, |b|) of the assembled system at the solution, over the
+    /// unknowns that are not constrained.
+    std::pair<double, double>
+    residual_norms() const;
+
+    /**
+     * Solve @p state by the nonlinear driver (a linear scene: one assembly
+     * and one solve) on the current space, whose system must be set up;
+     * returns what the driver did.
+     */
+    NonlinearSolver::Result
+    solve_load_state(const LoadState<dim> &state);
+
+    /// The load states the run solves (the maximum; with a load cycle
+    /// that linearity cannot give, the minimum too).
+    std::vector<const LoadState<dim> *>
+    load_states() const;
+
+    /// Whether every contribution is linear (no contact): one solve per
+    /// load state, and K proportional to the loads.
+    bool
+    is_linear() const;
+
+    /// Whether a growth step solves the minimum of the load cycle (rather
+    /// than scale the maximum's K's by the load ratio).
+    bool
+    solves_minimum() const;
+
+    /**
+     * K at the points of front_values under the minimum of the load cycle:
+     * the maximum's times the load ratio, or (solves_minimum()) solved and
+     * extracted on the current space, after which the solution and the
+     * constraints are the maximum's again.
+     */
+    std::vector<FrontValues<dim>>
+    minimum_front_values();
+    /// @}
 
     /**
      * Set up, assemble and solve on the current mesh, start the statistics
@@ -250,6 +308,14 @@ namespace xcrack
     /// directory @p checkpoint.
     void
     load_mesh(const std::string &checkpoint);
+
+    /**
+     * Every plugin of the run, keyed by its system and name ("Termination
+     * criteria/crack size"): the checkpoint saves and loads their states
+     * under these keys.
+     */
+    std::map<std::string, Plugins::InterfaceBase *>
+    plugins() const;
     /// @}
 
     /// @name Postprocessing (postprocess.cc)
@@ -269,13 +335,15 @@ namespace xcrack
     /// @}
 
     /**
-     * K and G along the fronts (InteractionIntegral) into front_values,
+     * K and G along the fronts (InteractionIntegral) under @p state (its
+     * lip pressure and body force enter the integrals) into front_values,
      * cross-checked by the displacement jumps: printed, added to the
      * statistics (and the error against `Reference K`) (fracture.cc). With
      * @p report false only front_values (a trial step's).
      */
     void
-    compute_fracture_parameters(const bool report = true);
+    compute_fracture_parameters(const LoadState<dim> &state,
+                                const bool            report = true);
 
     /// (r_inf, r_sup) of the estimate's wide crown around @p fronts (2D:
     /// a point each): as wide as the boundary, the other fronts and, in
@@ -367,13 +435,20 @@ namespace xcrack
     /// out of the constructor would print a warning.
     std::unique_ptr<TimerOutput> timer;
 
-    ParameterHandler              &prm;
-    RunParameters                  run_parameters;
-    FunctionConstants              function_constants;
-    Material                       material;
-    MeshDescription                mesh_description;
-    BoundaryConditions<dim>        boundary_conditions;
-    LinearSolver                   linear_solver;
+    ParameterHandler       &prm;
+    RunParameters           run_parameters;
+    FunctionConstants       function_constants;
+    Material                material;
+    MeshDescription         mesh_description;
+    BoundaryConditions<dim> boundary_conditions;
+    /// The solver of the linear systems, and its name (`Linear
+    /// solver/Type`).
+    std::unique_ptr<LinearSolver::Interface<dim>> linear_solver;
+    std::string                                   linear_solver_type;
+    NonlinearSolver                               nonlinear_solver;
+    /// The maximum (the loads of the file) and the minimum of the load
+    /// cycle.
+    LoadCycle<dim>                 load_cycle;
     WorkBalance<dim>               work_balance;
     unsigned int                   degree = 1;
     std::shared_ptr<Function<dim>> exact_solution;
@@ -392,8 +467,14 @@ namespace xcrack
     hp::FECollection<dim>                     fe_collection;
     hp::QCollection<dim>                      quadrature_collection;
     hp::QCollection<dim - 1>                  face_quadrature_collection;
-    DoFHandler<dim>                           dof_handler;
-    LevelSetFields<dim>                       level_sets;
+    /// How the crack lips touch (null: they do not).
+    std::unique_ptr<Contact::Interface<dim>> contact;
+    /// The terms of the weak form, each adding to the system: those owned
+    /// here (the bulk's, the loads'), and all of them, contact included.
+    std::vector<std::unique_ptr<Assembly::Contribution<dim>>> own_terms;
+    std::vector<Assembly::Contribution<dim> *>                contributions;
+    DoFHandler<dim>                                           dof_handler;
+    LevelSetFields<dim>                                       level_sets;
     /// Each crack as the level-set fields draw it (lips and ordered
     /// fronts).
     std::vector<CrackSurface<dim>> crack_surfaces;
@@ -408,6 +489,9 @@ namespace xcrack
 
     /// The enriched DoFs (owned and ghost) of the current space.
     IndexSet enriched_dofs;
+    /// With DOF gathering: the fronts of each crack the branch DoFs are
+    /// gathered along (the constraints of every load state tie them).
+    std::vector<std::vector<std::vector<FrontPoint<dim>>>> gathering_fronts;
     /// The largest rank's work over the mean (WorkBalance::imbalance()) of
     /// the current space; 1 on one rank.
     double work_imbalance = 1;

@@ -162,7 +162,8 @@ namespace xcrack
     const Function<dim>                             *lip_pressure,
     const LipsOf                                    &lips_of,
     const Function<dim>                             *body_force,
-    KDerivatives                                    *derivatives) const
+    KDerivatives                                    *derivatives,
+    const LipTraction                               &lip_traction) const
   {
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
     const double   nu   = material.poisson_ratio;
@@ -571,14 +572,15 @@ namespace xcrack
             if (derivatives)
               d_b->flush_cell(*derivatives->constraints);
 
-            // Lip terms. With a pressure: - int t_i [u_i,k] theta_k, t = p n
-            // on the lsn > 0 lip and -p n on the other. Along a curved 3D
+            // Lip terms. With a traction t on the lsn > 0 lip and -t on the
+            // other (a pressure: t = p n; contact): - int t_i [u_i,k]
+            // theta_k. Along a curved 3D
             // front the auxiliary fields load the lips too: their hoop
             // strain u_1 / rho is not zero on the lips in mode II, so
             // sigma^aux . n is not, and + int (sigma^aux n . u_,k theta_k)
             // [+ lip] - (the same) [- lip] completes the identity (it
             // vanishes for straight fronts and in mode I).
-            if (lip_pressure == nullptr && dim == 2)
+            if (lip_pressure == nullptr && !lip_traction && dim == 2)
               continue;
             std::vector<Point<dim>>     points;
             std::vector<double>         weights;
@@ -602,8 +604,11 @@ namespace xcrack
                 const Tensor<1, dim> n_ds = CellQuadrature::mapped_normal<dim>(
                   side_values.jacobian(2 * k), normals[k], weights[k]);
                 const Point<dim> x_global = side_values.quadrature_point(2 * k);
-                const double     p =
-                  (lip_pressure ? lip_pressure->value(x_global) : 0.);
+                // t ds on the lsn > 0 lip.
+                Tensor<1, dim> t_ds =
+                  (lip_pressure ? lip_pressure->value(x_global) : 0.) * n_ds;
+                if (lip_traction)
+                  t_ds += n_ds.norm() * lip_traction(cell, k);
                 const auto projection    = curve.project(x_global, first, last);
                 const Tensor<2, dim> &R  = projection.R;
                 const Tensor<1, dim>  xl = R * (x_global - projection.foot);
@@ -625,8 +630,7 @@ namespace xcrack
                   {
                     const Tensor<1, dim> theta = theta_at(points[k], r, j);
                     for (unsigned int m = 0; m < n_integrals; ++m)
-                      local[j * n_integrals + m] -=
-                        p * (n_ds * (jump[m] * theta));
+                      local[j * n_integrals + m] -= t_ds * (jump[m] * theta);
                   }
                 if constexpr (dim == 3)
                   {

@@ -107,7 +107,7 @@ namespace xcrack
       const FractureParameters &fracture = this->get_fracture_parameters();
       std::vector<std::pair<double, double>> radii = {
         {fracture.crown_inner, fracture.crown_outer}};
-      // (None before the first estimate of a resumed run.)
+      // (None before the run's first estimate; a checkpoint keeps it.)
       if (estimate.crown_outer > 0)
         radii.emplace_back(estimate.crown_inner, estimate.crown_outer);
       return radii;
@@ -290,6 +290,22 @@ namespace xcrack
     KTolerance<dim>::follows_fronts() const
     {
       return true;
+    }
+
+    template <int dim>
+    void
+    KTolerance<dim>::save(Plugins::State &state) const
+    {
+      state["warned"] = Plugins::pack(warned);
+    }
+
+
+
+    template <int dim>
+    void
+    KTolerance<dim>::load(const Plugins::State &state)
+    {
+      warned = Plugins::unpack(state, "warned", warned);
     }
 
     XCRACK_REGISTER_PLUGIN(Interface,

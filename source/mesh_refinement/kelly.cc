@@ -82,6 +82,22 @@ namespace xcrack
         triangulation, indicators, refine_fraction, coarsen_fraction);
     }
 
+    template <int dim>
+    void
+    Kelly<dim>::save(Plugins::State &state) const
+    {
+      state["warned"] = Plugins::pack(warned);
+    }
+
+
+
+    template <int dim>
+    void
+    Kelly<dim>::load(const Plugins::State &state)
+    {
+      warned = Plugins::unpack(state, "warned", warned);
+    }
+
     XCRACK_REGISTER_PLUGIN(Interface,
                            Kelly,
                            "kelly",

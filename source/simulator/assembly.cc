@@ -1,13 +1,10 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/hp/fe_values.h>
 
-#include <xcrack/elastic_cell_matrix.h>
+#include <xcrack/assembly/elasticity.h>
+#include <xcrack/assembly/loads.h>
 #include <xcrack/input_error.h>
 #include <xcrack/simulator.h>
-#include <xcrack/xfem/cell_quadrature.h>
-
-#include <cmath>
-#include <sstream>
 
 namespace xcrack
 {
@@ -43,120 +40,45 @@ namespace xcrack
 
   template <int dim>
   void
-  Simulator<dim>::assemble_system()
+  Simulator<dim>::assemble_system(const LoadState<dim> &state, const bool first)
   {
     TimerOutput::Scope t(*timer, "assemble");
+    system_matrix = 0;
+    system_rhs    = 0;
 
-    const double lambda = material.lambda(dim);
-    const double mu     = material.mu();
-
-    // Shape values only for a body force: the stiffness reads gradients,
-    // and FE_Enriched's tables for a tip rule of 750 points are large.
-    hp::FEValues<dim> hp_fe_values(
-      fe_collection,
-      quadrature_collection,
-      (boundary_conditions.body_force ? update_values : update_default) |
-        update_gradients | update_quadrature_points | update_JxW_values);
-    hp::FEFaceValues<dim> hp_fe_face_values(fe_collection,
-                                            face_quadrature_collection,
-                                            update_values |
-                                              update_quadrature_points |
-                                              update_JxW_values);
+    UpdateFlags flags = update_default;
+    for (Assembly::Contribution<dim> *contribution : contributions)
+      {
+        flags |= contribution->update_flags();
+        contribution->start_assembly(first);
+      }
+    hp::FEValues<dim> hp_fe_values(fe_collection, quadrature_collection, flags);
+    SpecialFEValues   special_values;
 
     FullMatrix<double>                   cell_matrix;
-    Vector<double>                       cell_rhs;
+    Vector<double>                       cell_rhs, iterate;
     std::vector<types::global_dof_index> local_dof_indices;
-    ElasticCellMatrix<dim>               stiffness;
-    std::vector<Vector<double>>          load;
-    SpecialFEValues                      special_values;
+    Assembly::CellInput<dim>             input;
+    input.state   = &state;
+    input.iterate = (first ? nullptr : &iterate);
     // The first load that is not finite where it is used, on this rank.
     std::string culprit;
-    const auto  check = [&culprit](const std::vector<Vector<double>> &values,
-                                  const std::vector<Point<dim>>     &points,
-                                  const std::string                 &entry) {
-      for (unsigned int q = 0; q < values.size() && culprit.empty(); ++q)
-        for (const double v : values[q])
-          if (!std::isfinite(v))
-            {
-              std::ostringstream message;
-              message << entry << " is not finite at (" << points[q]
-                      << "), where it is used: " << v << ".";
-              culprit = message.str();
-              break;
-            }
-    };
-
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const FEValues<dim> &fe_values =
-            reinit_fe_values(cell, hp_fe_values, special_values, degree + 1);
-          const unsigned int n_dofs = fe_values.dofs_per_cell;
+          input.cell = cell;
+          input.fe_values =
+            &reinit_fe_values(cell, hp_fe_values, special_values, degree + 1);
+          const unsigned int n_dofs = cell->get_fe().n_dofs_per_cell();
+          cell_matrix.reinit(n_dofs, n_dofs);
           cell_rhs.reinit(n_dofs);
-
-          if (boundary_conditions.body_force)
+          if (!first)
             {
-              load.resize(fe_values.n_quadrature_points, Vector<double>(dim));
-              boundary_conditions.body_force->vector_value_list(
-                fe_values.get_quadrature_points(), load);
-              check(load,
-                    fe_values.get_quadrature_points(),
-                    "Boundary conditions/Body force");
+              iterate.reinit(n_dofs);
+              cell->get_dof_values(solution, iterate);
             }
-
-          stiffness.compute(fe_values, lambda, mu, cell_matrix);
-          if (boundary_conditions.body_force)
-            for (const unsigned int q : fe_values.quadrature_point_indices())
-              for (unsigned int i = 0; i < n_dofs; ++i)
-                {
-                  const unsigned int c =
-                    fe_values.get_fe().system_to_component_index(i).first;
-                  cell_rhs(i) +=
-                    fe_values.shape_value(i, q) * load[q](c) * fe_values.JxW(q);
-                }
-
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary())
-              {
-                const auto it =
-                  boundary_conditions.neumann.find(face->boundary_id());
-                if (it == boundary_conditions.neumann.end())
-                  continue;
-                hp_fe_face_values.reinit(cell, face);
-                const FEFaceValues<dim> &fe_face_values =
-                  hp_fe_face_values.get_present_fe_values();
-                load.resize(fe_face_values.n_quadrature_points,
-                            Vector<double>(dim));
-                it->second->vector_value_list(
-                  fe_face_values.get_quadrature_points(), load);
-                check(load,
-                      fe_face_values.get_quadrature_points(),
-                      "Boundary conditions/Neumann (boundary " +
-                        std::to_string(face->boundary_id()) + ")");
-                for (const unsigned int q :
-                     fe_face_values.quadrature_point_indices())
-                  for (unsigned int i = 0; i < n_dofs; ++i)
-                    {
-                      const unsigned int c =
-                        fe_values.get_fe().system_to_component_index(i).first;
-                      cell_rhs(i) += fe_face_values.shape_value(i, q) *
-                                     load[q](c) * fe_face_values.JxW(q);
-                    }
-              }
-
-          if (boundary_conditions.lip_pressure)
-            {
-              add_lip_pressure(cell, cell_rhs);
-              for (const double v : cell_rhs)
-                if (!std::isfinite(v) && culprit.empty())
-                  {
-                    std::ostringstream message;
-                    message << "Boundary conditions/Lip pressure is not "
-                               "finite on the lips in the cell at ("
-                            << cell->center() << ").";
-                    culprit = message.str();
-                  }
-            }
+          for (Assembly::Contribution<dim> *contribution : contributions)
+            contribution->assemble(input, cell_matrix, cell_rhs, culprit);
 
           // A load that is not finite is reported after the loop (every
           // rank must reach the collective check); until then it must not
@@ -186,39 +108,48 @@ namespace xcrack
 
   template <int dim>
   void
-  Simulator<dim>::add_lip_pressure(
-    const typename DoFHandler<dim>::active_cell_iterator &cell,
-    Vector<double>                                       &cell_rhs) const
+  Simulator<dim>::create_contributions()
   {
-    if (!enrichment)
-      return;
-    const auto rule = enrichment->lip_quadrature(cell);
-    if (rule.size() == 0)
-      return;
-    const FiniteElement<dim> &fe = cell->get_fe();
-    FEValues<dim>             sides(
-      fe,
-      Quadrature<dim>(CellQuadrature::both_sides(rule.get_points(),
-                                                 rule.get_normal_vectors())),
-      update_values | update_quadrature_points | update_jacobians);
-    sides.reinit(cell);
-    for (unsigned int q = 0; q < rule.size(); ++q)
+    own_terms.clear();
+    own_terms.push_back(
+      std::make_unique<Assembly::Elasticity<dim>>(material.lambda(dim),
+                                                  material.mu()));
+    own_terms.push_back(std::make_unique<Assembly::BoundaryTractions<dim>>(
+      fe_collection, face_quadrature_collection));
+    // Only where a load set has them: a body force makes the cells' FEValues
+    // compute shape values, which FE_Enriched's tables for tip rules of
+    // hundreds of points make costly.
+    bool body_force = false, lip_pressure = false;
+    for (const LoadState<dim> *state :
+         {&load_cycle.maximum(), &load_cycle.minimum()})
       {
-        const Tensor<1, dim> n_ds =
-          CellQuadrature::mapped_normal<dim>(sides.jacobian(2 * q),
-                                             rule.normal_vector(q),
-                                             rule.weight(q));
-        const double p = boundary_conditions.lip_pressure->value(
-          sides.quadrature_point(2 * q));
-        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-          {
-            const unsigned int c = fe.system_to_component_index(i).first;
-            cell_rhs(i) +=
-              p * n_ds[c] *
-              (sides.shape_value(i, 2 * q) - sides.shape_value(i, 2 * q + 1));
-          }
+        body_force   = body_force || state->loads->body_force;
+        lip_pressure = lip_pressure || state->loads->lip_pressure;
       }
+    if (body_force)
+      own_terms.push_back(std::make_unique<Assembly::BodyForce<dim>>());
+    if (lip_pressure && enrichment)
+      own_terms.push_back(
+        std::make_unique<Assembly::LipPressure<dim>>(*enrichment));
+    contributions.clear();
+    for (const auto &term : own_terms)
+      contributions.push_back(term.get());
+    if (contact)
+      contributions.push_back(contact.get());
   }
+
+
+
+  template <int dim>
+  LinearSolver::MatrixProperty
+  Simulator<dim>::matrix_property() const
+  {
+    for (const Assembly::Contribution<dim> *contribution : contributions)
+      if (!contribution->is_symmetric())
+        return LinearSolver::MatrixProperty::general;
+    return LinearSolver::MatrixProperty::spd;
+  }
+
 
 
   template class Simulator<2>;

@@ -19,7 +19,7 @@ namespace xcrack
   {
     /// The version of the checkpoint format: a change of the state below
     /// must change it, so that an old checkpoint is refused, not misread.
-    constexpr unsigned int checkpoint_version = 3;
+    constexpr unsigned int checkpoint_version = 4;
   } // namespace
 
 
@@ -54,11 +54,15 @@ namespace xcrack
         const unsigned int              d       = dim;
         const unsigned int              n_ranks =
           Utilities::MPI::n_mpi_processes(mpi_communicator);
-        const unsigned int n_cracks  = cracks.size();
-        const unsigned int next_step = step + 1;
+        const unsigned int                    n_cracks  = cracks.size();
+        const unsigned int                    next_step = step + 1;
+        std::map<std::string, Plugins::State> plugin_states;
+        for (const auto &[key, plugin] : plugins())
+          plugin->save(plugin_states[key]);
         archive << version << d << n_ranks << n_cracks << next_step << cycles
                 << cracks_moved << previous_moves << statistics << pvd_records
-                << crack_records;
+                << crack_records << plugin_states << k_error_cells.crown_inner
+                << k_error_cells.crown_outer << k_error_cells.crown_cells;
         file.close();
         AssertThrow(file,
                     ExcMessage("Could not write the checkpoint in " +
@@ -92,9 +96,15 @@ namespace xcrack
                 "--resume " + directory +
                   ": the checkpoint was written by another version of xcrack "
                   "or for another problem.");
+    std::map<std::string, Plugins::State> plugin_states;
     archive >> next_step >> cycles >> cracks_moved >> previous_moves >>
-      statistics >> pvd_records >> crack_records;
+      statistics >> pvd_records >> crack_records >> plugin_states >>
+      k_error_cells.crown_inner >> k_error_cells.crown_outer >>
+      k_error_cells.crown_cells;
     step = next_step;
+    for (const auto &[key, plugin] : plugins())
+      if (const auto it = plugin_states.find(key); it != plugin_states.end())
+        plugin->load(it->second);
 
     load_mesh(dir);
     if (n_ranks != Utilities::MPI::n_mpi_processes(mpi_communicator))
@@ -117,6 +127,27 @@ namespace xcrack
     mesh_description.create(triangulation, /*refine=*/false);
     triangulation.load(checkpoint + "/mesh");
     level_sets.deserialize(cracks.size());
+  }
+
+
+
+  template <int dim>
+  std::map<std::string, Plugins::InterfaceBase *>
+  Simulator<dim>::plugins() const
+  {
+    std::map<std::string, Plugins::InterfaceBase *> list;
+    const auto add = [&](const std::string &system, Plugins::InterfaceBase *p) {
+      if (p)
+        list[system + "/" + p->plugin_name()] = p;
+    };
+    add("Linear solver", linear_solver.get());
+    add("Mesh refinement", mesh_refinement.get());
+    add("Contact", contact.get());
+    for (const auto &[system, plugin] : propagation.plugins())
+      add("Propagation/" + system, plugin);
+    for (const auto &criterion : termination_criteria)
+      add("Termination criteria", criterion.get());
+    return list;
   }
 
 

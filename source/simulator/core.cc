@@ -30,6 +30,10 @@ namespace xcrack
     }
     prm.leave_subsection();
 
+    NonlinearSolver::declare_parameters(prm);
+    prm.enter_subsection("Contact");
+    Contact::declare_parameters(prm);
+    prm.leave_subsection();
     EnrichmentParameters::declare_parameters(prm);
     WorkBalance<dim>::declare_parameters(prm);
     FractureParameters::declare_parameters(prm);
@@ -63,7 +67,11 @@ namespace xcrack
                   " but this is a " + std::to_string(dim) + "D problem.");
     material.parse_parameters(prm);
     mesh_description.parse_parameters(prm);
-    linear_solver.parse_parameters(prm);
+    {
+      const Plugins::ScopedSubsection scope(prm, "Linear solver");
+      linear_solver_type = prm.get("Type");
+      linear_solver      = LinearSolver::create<dim>(prm, *this);
+    }
     work_balance.parse_parameters(prm);
 
     FunctionConstants &constants = function_constants;
@@ -78,6 +86,11 @@ namespace xcrack
       }
     exact_solution = ExactSolution::create<dim>(prm, constants, material);
     boundary_conditions.parse_parameters(prm, constants, exact_solution);
+    {
+      const Plugins::ScopedSubsection scope(prm, "Propagation");
+      load_cycle.parse_parameters(prm, boundary_conditions, constants);
+    }
+    nonlinear_solver.parse_parameters(prm);
     cracks.parse_parameters(prm);
     fracture_parameters.parse_parameters(prm, constants);
     // (A strategy may read the fracture parameters: k tolerance needs the
@@ -114,6 +127,8 @@ namespace xcrack
     // A resumed run loads its refined mesh onto the coarse one.
     mesh_description.create(triangulation, resume_directory.empty());
     boundary_conditions.check_against(triangulation);
+    if (!load_cycle.proportional())
+      load_cycle.minimum_loads().check_against(triangulation);
     cracks.check_against(triangulation);
     // Refinement capped at the initial level repeats one mesh: a study of
     // several meshes would print rates of 0/0.
@@ -153,6 +168,11 @@ namespace xcrack
                           Utilities::MPI::min(low[d], mpi_communicator));
       displacement_scale = boundary_conditions.check_finite(
         triangulation, degree, size, material.youngs_modulus);
+      if (!load_cycle.proportional())
+        displacement_scale =
+          std::max(displacement_scale,
+                   load_cycle.minimum_loads().check_finite(
+                     triangulation, degree, size, material.youngs_modulus));
       boundary_conditions.check_rigid_body_motions(triangulation, size);
     }
     check_input(!boundary_conditions.dirichlet.empty() ||
@@ -192,9 +212,13 @@ namespace xcrack
             throw InputError(message.str());
           }
       }
-    check_input(!boundary_conditions.lip_pressure || cracks.size() > 0,
-                "Boundary conditions/Lip pressure is set but there is no "
-                "crack (Cracks/Number of cracks = 0).");
+    for (const BoundaryConditions<dim> *loads :
+         {static_cast<const BoundaryConditions<dim> *>(&boundary_conditions),
+          &load_cycle.minimum_loads()})
+      check_input(!loads->lip_pressure || cracks.size() > 0,
+                  loads->section +
+                    "/Lip pressure is set but there is no crack (Cracks/"
+                    "Number of cracks = 0).");
     if (cracks.size() > 0)
       {
         EnrichmentParameters enrichment_parameters;
@@ -228,6 +252,28 @@ namespace xcrack
         quadrature_collection.push_back(QGauss<dim>(degree + 1));
       }
     face_quadrature_collection.push_back(QGauss<dim - 1>(degree + 1));
+    {
+      const Plugins::ScopedSubsection scope(prm, "Contact");
+      contact = Contact::create<dim>(prm, *this);
+      check_input(!contact || !fracture_parameters.error_estimate,
+                  "Fracture parameters/Error estimate = true with Contact/"
+                  "Formulation = " +
+                    prm.get("Formulation") +
+                    ": the estimate's dual problems are those of lips "
+                    "without contact; it is not available with contact "
+                    "yet.");
+      check_input(!contact || cracks.size() > 0,
+                  "Contact/Formulation = " + prm.get("Formulation") +
+                    " but there is no crack whose lips could touch (Cracks/"
+                    "Number of cracks = 0).");
+    }
+    create_contributions();
+    check_input(linear_solver->accepts(matrix_property()),
+                "Linear solver/Type = " + linear_solver_type +
+                  " cannot solve the " +
+                  LinearSolver::to_string(matrix_property()) +
+                  " systems of this scene (its contact formulation): use "
+                  "Type = direct.");
 
     // The output directory must be usable: this is the last check before
     // any result is written (creating it and a probe file touches no
@@ -322,7 +368,7 @@ namespace xcrack
     run_record->add_file("parameters.prm");
 
     pcout << "xcrack: " << dim << "D linear elasticity, Q" << degree
-          << " elements, " << linear_solver.type << " solver" << std::endl;
+          << " elements, " << linear_solver_type << " solver" << std::endl;
     // Bilinear elements lock as the material becomes incompressible: the
     // answer stays finite but can be far off (Case 1 at nu = 0.499: 22 %
     // energy error with Q1 on 10,772 DoFs, 0.4 % with Q2 on 35,944).
@@ -419,19 +465,20 @@ namespace xcrack
                                    const unsigned int n_meshes)
   {
     setup_system();
-    assemble_system();
-    const unsigned int iterations = solve();
+    const NonlinearSolver::Result result =
+      solve_load_state(load_cycle.maximum());
+    const unsigned int iterations = result.linear_iterations;
     // What solve() kept for the dual solves of the K error estimate goes
     // when this function is left, also by an exception: it must not outlive
     // the matrix it was factorized from.
     struct Release
     {
-      LinearSolver &solver;
+      LinearSolver::Interface<dim> &solver;
       ~Release()
       {
         solver.release();
       }
-    } release{linear_solver};
+    } release{*linear_solver};
 
     statistics.start_row();
     statistics.add_value("step", (unsigned long long)step);
@@ -443,6 +490,12 @@ namespace xcrack
     statistics.add_value("enriched_dofs",
                          (unsigned long long)n_free_enriched_dofs());
     statistics.add_value("solver_iterations", (unsigned long long)iterations);
+    statistics.add_value("newton_iterations",
+                         (unsigned long long)result.iterations);
+    statistics.add_value("residual", result.residual);
+    if (contact)
+      for (const auto &[column, value] : contact->statistics())
+        statistics.add_value(column, value);
     if (enrichment && Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
       statistics.add_value("work_imbalance", work_imbalance);
     if (dof_handler.n_dofs() <= run_parameters.condition_number_limit)
@@ -455,8 +508,9 @@ namespace xcrack
       line << ", mesh " << mesh;
     line << ": " << triangulation.n_global_active_cells() << " cells, "
          << dof_handler.n_dofs() << " dofs";
-    if (linear_solver.type != "direct")
-      line << ", " << iterations << " CG iterations";
+    if (!linear_solver->iterative_method().empty())
+      line << ", " << iterations << " " << linear_solver->iterative_method()
+           << " iterations";
     // The largest displacement component: a first sanity check of any run
     // (and what the demo compares with beam theory).
     const double max_displacement = compute_max_displacement();
@@ -506,7 +560,7 @@ namespace xcrack
     front_values.clear();
     front_moves.clear();
     if (enrichment && fracture_parameters.compute)
-      compute_fracture_parameters();
+      compute_fracture_parameters(load_cycle.maximum());
   }
 
 

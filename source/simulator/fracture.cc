@@ -18,7 +18,8 @@ namespace xcrack
 {
   template <int dim>
   void
-  Simulator<dim>::compute_fracture_parameters(const bool report)
+  Simulator<dim>::compute_fracture_parameters(const LoadState<dim> &state,
+                                              const bool            report)
   {
     TimerOutput::Scope t(*timer, "fracture");
     // The fronts of all cracks, numbered one after the other.
@@ -51,13 +52,27 @@ namespace xcrack
       normals         = rule.get_normal_vectors();
     };
     const InteractionIntegral<dim> integral(fracture_parameters, material);
+    const auto lip_pressure = scaled(state.loads->lip_pressure.get(), state);
+    const auto body_force   = scaled(state.loads->body_force.get(), state);
+    // Closed lips press on each other: their tractions load the lips.
+    typename InteractionIntegral<dim>::LipTraction contact_traction;
+    if (contact)
+      contact_traction = [this](const auto &cell, const unsigned int k) {
+        return contact->lip_traction(cell->id(), k);
+      };
     front_values = integral.compute(dof_handler,
                                     solution,
                                     fronts,
                                     fe_values_of,
-                                    boundary_conditions.lip_pressure.get(),
+                                    lip_pressure.get(),
                                     lips_of,
-                                    boundary_conditions.body_force.get());
+                                    body_force.get(),
+                                    nullptr,
+                                    contact_traction);
+    // Where the lips touch at the front, it is closed.
+    if (contact)
+      for (FrontValues<dim> &v : front_values)
+        v.closed = (contact->closed_fraction(v.point.position, v.r_inf) > 0.5);
     if (!report)
       return;
     const bool estimate = fracture_parameters.error_estimate;
@@ -133,6 +148,9 @@ namespace xcrack
                       " (unreliable: the mesh is too coarse for the dual "
                       "problem, its crown is less than 4 cells wide)" :
                       "")
+                << std::endl;
+          if (v.closed)
+            out << "    the lips are closed at the tip: K_I counts as 0"
                 << std::endl;
           warn_crown(v);
           const std::string suffix = "_" + std::to_string(i + 1);
@@ -223,6 +241,12 @@ namespace xcrack
                 statistics.add_value("estimate_crown_cells",
                                      k_error_cells.crown_cells);
             }
+          unsigned int n_closed = 0;
+          for (const auto &v : values)
+            n_closed += (v.front == f && v.closed);
+          if (n_closed > 0)
+            out << "    the lips are closed at " << n_closed << " of its " << n
+                << " points: K_I counts as 0 there" << std::endl;
           for (const auto &v : values)
             if (v.front == f && !v.crown_clear)
               {
@@ -541,7 +565,7 @@ namespace xcrack
             {
               TrilinosWrappers::MPI::Vector z(locally_owned_dofs,
                                               mpi_communicator);
-              linear_solver.solve_again(z, load);
+              linear_solver->solve_again(z, load);
               homogeneous.distribute(z);
               duals.emplace_back(locally_owned_dofs,
                                  locally_relevant_dofs,
@@ -633,16 +657,19 @@ namespace xcrack
   {
     csv << "index,s,x,y,z,K_I,K_II,K_III,G,G_Irwin,r_inf,r_sup,"
            "K_I_jump,K_II_jump,K_III_jump,front";
+    if (contact)
+      csv << ",closed";
     // The estimates of K_exact - K, when asked for.
     const bool errors = fracture_parameters.error_estimate;
     if (errors)
       csv << ",K_I_error,K_II_error,K_III_error";
-    // The moves of a growth step: equivalent K, its range, the rate, the
-    // kink angle (radians) and the advance to the next step.
+    // The moves of a growth step: the K's at the minimum of the load
+    // cycle, the equivalent K, its range, the rate, the kink angle
+    // (radians) and the advance to the next step.
     const bool moves =
       (front_moves.size() == front_values.size() && !front_moves.empty());
     if (moves)
-      csv << ",K_eq,delta_K,rate,angle,advance";
+      csv << ",K_I_min,K_II_min,K_III_min,K_eq,delta_K,rate,angle,advance";
     csv << '\n' << std::setprecision(10);
     for (unsigned int i = 0; i < front_values.size(); ++i)
       {
@@ -653,14 +680,17 @@ namespace xcrack
             << ',' << v.k_II << ',' << v.k_III << ',' << v.g << ',' << v.g_irwin
             << ',' << v.r_inf << ',' << v.r_sup << ',' << v.k_jump[0] << ','
             << v.k_jump[1] << ',' << v.k_jump[2] << ',' << v.front + 1;
+        if (contact)
+          csv << ',' << v.closed;
         if (errors)
           csv << ',' << v.k_error[0] << ',' << v.k_error[1] << ','
               << v.k_error[2];
         if (moves)
           {
             const auto &m = front_moves[i];
-            csv << ',' << m.k_eq << ',' << m.delta_k << ',' << m.rate << ','
-                << m.angle << ',' << m.advance;
+            csv << ',' << m.k_minimum[0] << ',' << m.k_minimum[1] << ','
+                << m.k_minimum[2] << ',' << m.k_eq << ',' << m.delta_k << ','
+                << m.rate << ',' << m.angle << ',' << m.advance;
           }
         csv << '\n';
       }

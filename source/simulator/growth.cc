@@ -27,6 +27,7 @@ namespace xcrack
     // The moves at the nominal advance, and the cycles the last advance
     // took (known now that K at its end is).
     front_moves         = propagation.moves(front_values,
+                                    minimum_front_values(),
                                     fronts_per_crack(),
                                     propagation.maximum_advance());
     double delta_cycles = 0;
@@ -198,15 +199,16 @@ namespace xcrack
     // On the same split of the mesh: the fields are restored below as
     // they are, owned by the same ranks.
     setup_system(false);
-    assemble_system();
-    solve();
+    solve_load_state(load_cycle.maximum());
     // A trial solve reports no error estimate.
-    linear_solver.release();
+    linear_solver->release();
     for (unsigned int c = 0; c < crack_surfaces.size(); ++c)
       crack_surfaces[c].extract(level_sets, c);
-    compute_fracture_parameters(false);
+    compute_fracture_parameters(load_cycle.maximum(), false);
+    // Only the trial's kinks are used, which the maximum gives.
     const std::vector<FrontMove<dim>> trial =
       propagation.moves(front_values,
+                        front_values,
                         fronts_per_crack(),
                         propagation.maximum_advance());
     Propagation<dim>::correct_directions(front_moves, trial);

@@ -30,13 +30,13 @@ namespace xcrack
           level_sets.subtract_from_lsn(enrichment->lsn_shift());
         }
     }
-    std::vector<std::vector<std::vector<FrontPoint<dim>>>> fronts;
+    gathering_fronts.clear();
     if (enrichment && enrichment->get_parameters().gather)
       for (unsigned int c = 0; c < cracks.size(); ++c)
         {
           CrackSurface<dim> surface;
           surface.extract(level_sets, c);
-          fronts.push_back(surface.fronts());
+          gathering_fronts.push_back(surface.fronts());
         }
 
     TimerOutput::Scope t(*timer, "setup");
@@ -46,14 +46,7 @@ namespace xcrack
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
 
-    constraints.clear();
-    constraints.reinit(locally_relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    if (enrichment)
-      enrichment->make_constraints(dof_handler, constraints, fronts);
-
-    make_dirichlet_constraints();
-    constraints.close();
+    make_constraints(load_cycle.maximum());
 
     // Gathered DoFs are tied to masters that may be owned by another rank
     // and lie outside the relevant set: assembly writes to their rows too.
@@ -145,7 +138,22 @@ namespace xcrack
 
   template <int dim>
   void
-  Simulator<dim>::make_dirichlet_constraints()
+  Simulator<dim>::make_constraints(const LoadState<dim> &state)
+  {
+    constraints.clear();
+    constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    if (enrichment)
+      enrichment->make_constraints(dof_handler, constraints, gathering_fronts);
+    make_dirichlet_constraints(state);
+    constraints.close();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::make_dirichlet_constraints(const LoadState<dim> &state)
   {
     // Pinned vertices: their standard DoFs of the listed components. A pin
     // where the vertex carries enrichment would not hold the displacement
@@ -185,21 +193,25 @@ namespace xcrack
                   }
               }
 
+    // The state's data: its load set's, times its factor.
+    BoundaryConditions<dim> data;
+    data.dirichlet_mask = state.loads->dirichlet_mask;
+    for (const auto &[id, function] : state.loads->dirichlet)
+      data.dirichlet[id] =
+        (state.factor == 1 ?
+           function :
+           std::make_shared<ScaledFunction<dim>>(*function, state.factor));
     if (enrichment)
       {
         make_enriched_dirichlet_constraints(dof_handler,
                                             *enrichment,
-                                            boundary_conditions,
+                                            data,
                                             constraints);
         return;
       }
-    for (const auto &[id, function] : boundary_conditions.dirichlet)
+    for (const auto &[id, function] : data.dirichlet)
       VectorTools::interpolate_boundary_values(
-        dof_handler,
-        id,
-        *function,
-        constraints,
-        boundary_conditions.dirichlet_mask.at(id));
+        dof_handler, id, *function, constraints, data.dirichlet_mask.at(id));
   }
 
 

@@ -48,24 +48,160 @@ namespace xcrack
   {
     TimerOutput::Scope t(*timer, "solve");
 
-    std::vector<std::vector<bool>> constant_modes;
-    if (linear_solver.type != "direct")
-      constant_modes = translation_modes(dof_handler, enrichment != nullptr);
-
+    const LinearSolver::System system{
+      system_matrix, matrix_property(), [this]() {
+        return translation_modes(dof_handler, enrichment != nullptr);
+      }};
     TrilinosWrappers::MPI::Vector distributed(locally_owned_dofs,
                                               mpi_communicator);
-    const unsigned int iterations = linear_solver.solve(system_matrix,
-                                                        distributed,
-                                                        system_rhs,
-                                                        constant_modes);
+    const unsigned int            iterations =
+      linear_solver->solve(system, distributed, system_rhs);
     // The factorization references the matrix: keep it only for the dual
     // solves of the K error estimate, which follow at once.
     if (!(fracture_parameters.error_estimate && fracture_parameters.compute))
-      linear_solver.release();
+      linear_solver->release();
     constraints.distribute(distributed);
     solution = distributed;
     return iterations;
   }
+
+
+  template <int dim>
+  std::pair<double, double>
+  Simulator<dim>::residual_norms() const
+  {
+    TrilinosWrappers::MPI::Vector residual(locally_owned_dofs,
+                                           mpi_communicator),
+      iterate(locally_owned_dofs, mpi_communicator), load(system_rhs);
+    iterate = solution;
+    system_matrix.vmult(residual, iterate);
+    residual.sadd(-1., 1., system_rhs);
+    constraints.set_zero(residual);
+    constraints.set_zero(load);
+    return {residual.l2_norm(), load.l2_norm()};
+  }
+
+
+
+  template <int dim>
+  NonlinearSolver::Result
+  Simulator<dim>::solve_load_state(const LoadState<dim> &state)
+  {
+    NonlinearSolver::Problem problem;
+    problem.assemble = [&](const bool first) { assemble_system(state, first); };
+    problem.solve    = [&]() { return solve(); };
+    problem.residual = [&]() {
+      TimerOutput::Scope t(*timer, "solve");
+      return residual_norms();
+    };
+    problem.linear           = is_linear();
+    problem.changed_statuses = [&]() {
+      unsigned int n = 0;
+      std::string  where;
+      for (const Assembly::Contribution<dim> *contribution : contributions)
+        {
+          const auto [changed, place] = contribution->changed_statuses();
+          n += changed;
+          if (where.empty())
+            where = place;
+        }
+      // Over all ranks: the count, and the place the first rank with one
+      // gives.
+      std::string first;
+      for (const std::string &place :
+           Utilities::MPI::all_gather(mpi_communicator, where))
+        if (first.empty())
+          first = place;
+      return std::make_pair(Utilities::MPI::sum(n, mpi_communicator), first);
+    };
+    return nonlinear_solver.solve(problem,
+                                  "the " + state.name + " load of step " +
+                                    std::to_string(step));
+  }
+
+
+
+  template <int dim>
+  std::vector<const LoadState<dim> *>
+  Simulator<dim>::load_states() const
+  {
+    if (solves_minimum())
+      return {&load_cycle.maximum(), &load_cycle.minimum()};
+    return {&load_cycle.maximum()};
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::is_linear() const
+  {
+    for (const auto &contribution : contributions)
+      if (!contribution->is_linear())
+        return false;
+    return true;
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::solves_minimum() const
+  {
+    return propagation.enabled() && fracture_parameters.compute && enrichment &&
+           !(load_cycle.proportional() && is_linear());
+  }
+
+
+
+  template <int dim>
+  std::vector<FrontValues<dim>>
+  Simulator<dim>::minimum_front_values()
+  {
+    if (!solves_minimum())
+      {
+        // Linearity: every K is the maximum's times R.
+        const double                  r      = load_cycle.load_ratio();
+        std::vector<FrontValues<dim>> values = front_values;
+        for (FrontValues<dim> &v : values)
+          {
+            v.k_I *= r;
+            v.k_II *= r;
+            v.k_III *= r;
+            v.g *= r * r;
+            v.g_irwin *= r * r;
+            for (double &k : v.k_jump)
+              k *= r;
+          }
+        return values;
+      }
+    // Solved on the maximum's space, which stays: the solution, the
+    // constraints and the K's of the maximum are restored afterwards.
+    const TrilinosWrappers::MPI::Vector maximum_solution = solution;
+    const std::vector<FrontValues<dim>> maximum_values   = front_values;
+    const LoadState<dim>               &minimum          = load_cycle.minimum();
+    {
+      TimerOutput::Scope t(*timer, "setup");
+      make_constraints(minimum);
+    }
+    const NonlinearSolver::Result result = solve_load_state(minimum);
+    linear_solver->release();
+    statistics.add_value("minimum_newton_iterations",
+                         (unsigned long long)result.iterations);
+    statistics.add_value("minimum_residual", result.residual);
+    compute_fracture_parameters(minimum, false);
+    std::vector<FrontValues<dim>> values = front_values;
+    // The points must be the maximum's (the same fronts, the same space).
+    AssertDimension(values.size(), maximum_values.size());
+    front_values = maximum_values;
+    solution     = maximum_solution;
+    {
+      TimerOutput::Scope t(*timer, "setup");
+      make_constraints(load_cycle.maximum());
+    }
+    return values;
+  }
+
 
 
   template class Simulator<2>;

@@ -72,6 +72,22 @@ namespace xcrack
       return verdict;
     }
 
+    template <int dim>
+    void
+    CrackLeavesBody<dim>::save(Plugins::State &state) const
+    {
+      state["fronts"] = Plugins::pack(n_fronts);
+    }
+
+
+
+    template <int dim>
+    void
+    CrackLeavesBody<dim>::load(const Plugins::State &state)
+    {
+      n_fronts = Plugins::unpack(state, "fronts", n_fronts);
+    }
+
     XCRACK_REGISTER_PLUGIN(Interface,
                            CrackLeavesBody,
                            "crack leaves body",

@@ -120,6 +120,22 @@ namespace xcrack
                         1.);
     }
 
+    template <int dim>
+    void
+    CrackSize<dim>::save(Plugins::State &state) const
+    {
+      state["initial size"] = Plugins::pack(initial_size);
+    }
+
+
+
+    template <int dim>
+    void
+    CrackSize<dim>::load(const Plugins::State &state)
+    {
+      initial_size = Plugins::unpack(state, "initial size", initial_size);
+    }
+
     XCRACK_REGISTER_PLUGIN(Interface,
                            CrackSize,
                            "crack size",

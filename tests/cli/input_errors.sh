@@ -79,6 +79,25 @@ expect_error growth_forman "Model name = forman needs the fracture toughness: se
   < <(growth 0.1 0 forman)
 expect_error growth_failure_check "'fracture toughness' needs Material/Fracture toughness" \
   < <(growth; printf 'subsection Termination criteria\n  set Termination criteria = fracture toughness\nend\n')
+# The minimum of the load cycle: given twice, or loads on supports it cannot
+# change, or on a boundary the mesh lacks.
+minimum() {
+  growth 0.1 "${1:-0}"
+  printf 'subsection Propagation\n  subsection Minimum loads\n    set %s\n  end\nend\n' "$2"
+}
+expect_error minimum_twice "Load ratio = 0.5 and Propagation/Minimum loads both give the minimum" \
+  < <(minimum 0.5 "Neumann = 1: 0.5; 0")
+expect_error minimum_new_support "Minimum loads/Dirichlet: boundary 2 is not a Dirichlet boundary of Boundary conditions/Dirichlet" \
+  < <(minimum 0 "Dirichlet = 2: 0; 0")
+expect_error minimum_unknown_boundary "Minimum loads/Neumann: boundary id 9 does not exist on the mesh" \
+  < <(minimum 0 "Neumann = 9: 1; 0")
+expect_error minimum_both_kinds "Minimum loads/Neumann: boundary id 0 has a full displacement" \
+  < <(minimum 0 "Neumann = 0: 1; 0")
+# Contact: a coefficient that is not positive; lips that do not exist.
+expect_error contact_penalty "Contact/Penalty/Penalty coefficient = -1: must be positive" \
+  < <(growth; printf 'subsection Contact\n  set Formulation = penalty\n  subsection Penalty\n    set Penalty coefficient = -1\n  end\nend\n')
+expect_error contact_no_crack "Contact/Formulation = penalty but there is no crack" \
+  < <(cat valid.prm; printf 'subsection Contact\n  set Formulation = penalty\nend\n')
 expect_error growth_no_crack "Propagation/Number of steps > 0 but there is no crack" \
   < <(cat valid.prm; printf 'subsection Propagation\n  set Number of steps = 2\n  set Maximum advance = 0.1\nend\n')
 expect_error growth_coarsening "Mesh refinement/Front/Coarsening band = 3: must exceed twice the Front band" \

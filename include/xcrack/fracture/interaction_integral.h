@@ -111,6 +111,14 @@ namespace xcrack
      * singularity inside; if not, K is unreliable.
      */
     bool crown_clear = true;
+    /**
+     * Whether the lips are closed at the point (contact: most of the lips
+     * within r_inf press on each other). A closed point has no opening
+     * singularity: K_I counts as 0 where it is used (the growth model),
+     * whatever the extraction gives, whose lip term then carries the
+     * error of the contact pressures (filled by the Simulator).
+     */
+    bool closed = false;
   };
 
 
@@ -198,6 +206,11 @@ namespace xcrack
                                       std::vector<Point<dim>> &,
                                       std::vector<double> &,
                                       std::vector<Tensor<1, dim>> &)>;
+    /// A traction on the lsn > 0 lip (force per area; -it on the other)
+    /// at the k-th point of a cell's lip rule, besides the lip pressure:
+    /// the lips' contact.
+    using LipTraction =
+      std::function<Tensor<1, dim>(const CellIterator &, const unsigned int)>;
 
     InteractionIntegral(const FractureParameters &parameters,
                         const Material           &material);
@@ -207,8 +220,10 @@ namespace xcrack
      * BENCHMARKS.md, a closed front repeating its first point at the end;
      * a 2D tip is a front of one point) from the ghosted @p solution on
      * @p dof_handler, at the nodes of each front's FrontBasis.
-     * @p lip_pressure and @p body_force (dim components) may be null.
-     * With @p derivatives, also dK/dU of every K returned. Collective.
+     * @p lip_pressure and @p body_force (dim components) may be null;
+     * @p lip_traction adds to the pressure where given. With
+     * @p derivatives, also dK/dU of every K returned (of K's linear part:
+     * the lip traction counts as given). Collective.
      */
     std::vector<FrontValues<dim>>
     compute(const DoFHandler<dim>                           &dof_handler,
@@ -217,8 +232,9 @@ namespace xcrack
             const FEValuesOf                                &fe_values_of,
             const Function<dim>                             *lip_pressure,
             const LipsOf                                    &lips_of,
-            const Function<dim> *body_force  = nullptr,
-            KDerivatives        *derivatives = nullptr) const;
+            const Function<dim> *body_force   = nullptr,
+            KDerivatives        *derivatives  = nullptr,
+            const LipTraction   &lip_traction = LipTraction()) const;
 
   private:
     const FractureParameters &parameters;

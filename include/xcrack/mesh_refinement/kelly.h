@@ -32,6 +32,13 @@ namespace xcrack
       mark(parallel::distributed::Triangulation<dim> &triangulation)
         const override;
 
+      /// Whether its warning was printed (once per run, resumed or not).
+      void
+      save(Plugins::State &state) const override;
+
+      void
+      load(const Plugins::State &state) override;
+
     private:
       double refine_fraction  = 0.3;
       double coarsen_fraction = 0.0;

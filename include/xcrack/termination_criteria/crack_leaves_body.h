@@ -24,6 +24,14 @@ namespace xcrack
       Verdict
       check() override;
 
+      /// The fronts counted at the first check: a resumed run compares
+      /// with the run's start, not with the step it resumes at.
+      void
+      save(Plugins::State &state) const override;
+
+      void
+      load(const Plugins::State &state) override;
+
     private:
       /// The number of fronts of each crack at the first check.
       std::vector<unsigned int> n_fronts;

@@ -35,6 +35,13 @@ namespace xcrack
       double
       progress() const override;
 
+      /// The initial size (the progress is measured from it).
+      void
+      save(Plugins::State &state) const override;
+
+      void
+      load(const Plugins::State &state) override;
+
     private:
       double maximum_size = 0;
       /// The largest size at the first check (for progress()).

@@ -1,0 +1,102 @@
+#ifndef xcrack_contact_penalty_h
+#define xcrack_contact_penalty_h
+
+#include <xcrack/contact/interface.h>
+#include <xcrack/simulator_access.h>
+#include <xcrack/xfem/lip_values.h>
+
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace xcrack
+{
+  namespace Contact
+  {
+    /**
+     * `penalty`: where the lips interpenetrate (g <= 0) they press on each
+     * other with p = kappa (-g), as if joined by stiff springs; where they
+     * open, nothing. The energy kappa/2 int <-g>_+^2 adds, at a closed
+     * point, kappa (n . [[phi_i]]) (n . [[phi_j]]) ds to the tangent and
+     * nothing to the right-hand side (the lips coincide before the load):
+     * a system as symmetric and definite as elasticity's, solved exactly
+     * once the Newton loop has found the closed points. A solve starts
+     * with every point closed (its first iterate is zero), so that a piece
+     * the crack cuts off rests on the lips from the first step: lips that
+     * open take one or two more steps.
+     *
+     * kappa = `Penalty coefficient` E / h, h the size of the cell (the
+     * stiffness of a cell's worth of material), so that the coefficient
+     * says how much stiffer than the material the springs are: the lips
+     * interpenetrate by about p h / (coefficient E), and K_I of a closed
+     * crack is about that fraction of the load's K (doc/verification.md,
+     * "Crack lips that touch"). Large coefficients approach exact contact
+     * and condition the system worse (the Newton loop also needs more
+     * steps when many points change status at once).
+     */
+    template <int dim>
+    class Penalty : public Interface<dim>, public SimulatorAccess<dim>
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      void
+      parse_parameters(ParameterHandler &prm) override;
+
+      void
+      start_assembly(const bool first) override;
+
+      void
+      assemble(const Assembly::CellInput<dim> &input,
+               FullMatrix<double>             &matrix,
+               Vector<double>                 &rhs,
+               std::string                    &culprit) override;
+
+      std::pair<unsigned int, std::string>
+      changed_statuses() const override;
+
+      Tensor<1, dim>
+      lip_traction(const CellId &cell, const unsigned int q) const override;
+
+      std::map<std::string, double>
+      statistics() const override;
+
+      double
+      closed_fraction(const Point<dim> &x, const double radius) const override;
+
+    private:
+      double coefficient = 1e3;
+      /// Pressure space = cells: one pressure per cell, from its mean gap.
+      bool per_cell = true;
+
+      /// Per cell with lips, at each lip point: whether the last assembly
+      /// found it closed, its contact pressure, and the normal (for the
+      /// traction p n).
+      std::map<CellId, std::vector<char>>           closed;
+      std::map<CellId, std::vector<double>>         pressures;
+      std::map<CellId, std::vector<Tensor<1, dim>>> normals;
+      /// Points whose status (open or closed) the last assembly changed,
+      /// and where the first of them is.
+      unsigned int n_changed = 0;
+      Point<dim>   first_changed;
+      /// Of the last assembly, on this rank: the lips' length (area), that
+      /// of the closed ones, the smallest and largest pressure where closed.
+      double lip_measure = 0, closed_measure = 0;
+      double pressure_min = 0, pressure_max = 0;
+      /// Every lip point of the last assembly on this rank: where it is,
+      /// its share of the lips, whether it is closed.
+      struct LipPoint
+      {
+        Point<dim> x;
+        double     ds;
+        bool       closed;
+      };
+      std::vector<LipPoint> lip_points;
+
+      std::unique_ptr<LipValues<dim>> lip_values;
+    };
+  } // namespace Contact
+} // namespace xcrack
+
+#endif
