@@ -29,6 +29,27 @@ namespace xcrack
                 break;
               }
       }
+
+
+
+      /// Add @p factor times int load . phi_i, integrated by @p values (on
+      /// a cell or a face), to @p rhs.
+      template <int dim>
+      void
+      add_load(const FEValuesBase<dim>           &values,
+               const std::vector<Vector<double>> &load,
+               const double                       factor,
+               Vector<double>                    &rhs)
+      {
+        const FiniteElement<dim> &fe = values.get_fe();
+        for (const unsigned int q : values.quadrature_point_indices())
+          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+            {
+              const unsigned int c = fe.system_to_component_index(i).first;
+              rhs(i) +=
+                factor * values.shape_value(i, q) * load[q](c) * values.JxW(q);
+            }
+      }
     } // namespace
 
 
@@ -55,7 +76,6 @@ namespace xcrack
       const auto &neumann = input.state->loads->neumann;
       if (neumann.empty() || !input.cell->at_boundary())
         return;
-      const FiniteElement<dim> &fe = input.cell->get_fe();
       for (const auto &face : input.cell->face_iterators())
         if (face->at_boundary())
           {
@@ -72,13 +92,7 @@ namespace xcrack
                          input.state->loads->section + "/Neumann (boundary " +
                            std::to_string(face->boundary_id()) + ")",
                          culprit);
-            for (const unsigned int q : values.quadrature_point_indices())
-              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                {
-                  const unsigned int c = fe.system_to_component_index(i).first;
-                  rhs(i) += input.state->factor * values.shape_value(i, q) *
-                            load[q](c) * values.JxW(q);
-                }
+            add_load(values, load, input.state->factor, rhs);
           }
     }
 
@@ -110,14 +124,7 @@ namespace xcrack
                    values.get_quadrature_points(),
                    input.state->loads->section + "/Body force",
                    culprit);
-      const FiniteElement<dim> &fe = values.get_fe();
-      for (const unsigned int q : values.quadrature_point_indices())
-        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-          {
-            const unsigned int c = fe.system_to_component_index(i).first;
-            rhs(i) += input.state->factor * values.shape_value(i, q) *
-                      load[q](c) * values.JxW(q);
-          }
+      add_load(values, load, input.state->factor, rhs);
     }
 
 

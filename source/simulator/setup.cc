@@ -1,4 +1,8 @@
+#include <deal.II/base/quadrature_lib.h>
+
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
@@ -227,6 +231,77 @@ namespace xcrack
         ++n;
     return Utilities::MPI::sum(n, mpi_communicator);
   }
+
+
+  template <int dim>
+  void
+  Simulator<dim>::create_finite_elements(ParameterHandler &prm)
+  {
+    if (cracks.size() > 0)
+      {
+        EnrichmentParameters enrichment_parameters;
+        enrichment_parameters.parse_parameters(prm);
+        enrichment = std::make_unique<Enrichment<dim>>(cracks.size(),
+                                                       degree,
+                                                       enrichment_parameters);
+        // Several cracks: classify the coarse mesh once now, so that
+        // cracks whose enriched zones meet stop the run here, before any
+        // result is written.
+        if (cracks.size() > 1)
+          {
+            DoFHandler<dim> probe(triangulation);
+            if (!resume_directory.empty()) // else done by the check above
+              level_sets.initialize(cracks.shapes());
+            enrichment->set_fe_indices(probe, level_sets);
+          }
+        // Gauss rules per element: the cells of the tip zone carry the
+        // non-polynomial branch functions and get two more points.
+        for (const auto &fe : enrichment->get_fe_collection())
+          {
+            fe_collection.push_back(fe);
+            quadrature_collection.push_back(QGauss<dim>(
+              degree +
+              (fe_collection.size() - 1 >= Enrichment<dim>::tip ? 3 : 1)));
+          }
+      }
+    else
+      {
+        fe_collection.push_back(FESystem<dim>(FE_Q<dim>(degree), dim));
+        quadrature_collection.push_back(QGauss<dim>(degree + 1));
+      }
+    face_quadrature_collection.push_back(QGauss<dim - 1>(degree + 1));
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::create_terms(ParameterHandler &prm)
+  {
+    {
+      const Plugins::ScopedSubsection scope(prm, "Contact");
+      contact = Contact::create<dim>(prm, *this);
+      check_input(!contact || !fracture_parameters.error_estimate,
+                  "Fracture parameters/Error estimate = true with Contact/"
+                  "Formulation = " +
+                    prm.get("Formulation") +
+                    ": the estimate's dual problems are those of lips "
+                    "without contact; it is not available with contact "
+                    "yet.");
+      check_input(!contact || cracks.size() > 0,
+                  "Contact/Formulation = " + prm.get("Formulation") +
+                    " but there is no crack whose lips could touch (Cracks/"
+                    "Number of cracks = 0).");
+    }
+    create_contributions();
+    check_input(linear_solver->accepts(matrix_property()),
+                "Linear solver/Type = " + linear_solver_type +
+                  " cannot solve the " +
+                  LinearSolver::to_string(matrix_property()) +
+                  " systems of this scene (its contact formulation): use "
+                  "Type = direct.");
+  }
+
 
 
   template class Simulator<2>;

@@ -122,17 +122,6 @@ namespace xcrack
 
 
   template <int dim>
-  std::vector<const LoadState<dim> *>
-  Simulator<dim>::load_states() const
-  {
-    if (solves_minimum())
-      return {&load_cycle.maximum(), &load_cycle.minimum()};
-    return {&load_cycle.maximum()};
-  }
-
-
-
-  template <int dim>
   bool
   Simulator<dim>::is_linear() const
   {
