@@ -42,6 +42,17 @@ main(int argc, char *argv[])
   const bool root = (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
 
   const std::string argument = (argc > 1 ? argv[1] : "");
+  if (argument == "--resume" && argc != 3)
+    {
+      if (root)
+        {
+          std::cerr << "xcrack: --resume takes one argument, the output "
+                       "directory of the run to continue."
+                    << std::endl;
+          print_usage(std::cerr);
+        }
+      return 1;
+    }
   if (argc != 2 && !(argc == 3 && argument == "--resume"))
     {
       if (root)

@@ -10,11 +10,13 @@
 #include <xcrack/parameters.h>
 #include <xcrack/simulator.h>
 
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <vector>
 
 namespace xcrack
 {
@@ -182,6 +184,45 @@ namespace xcrack
             }
         }
     }
+
+    /**
+     * ParameterHandler follows `include` lines (relative to the working
+     * directory) without a guard: a file that includes itself, directly or
+     * through others, recurses until the stack overflows. Follow the
+     * chain first and name the cycle. Files that cannot be read are left
+     * to ParameterHandler's message.
+     */
+    void
+    check_include_cycles(const std::string        &filename,
+                         std::vector<std::string> &chain)
+    {
+      std::error_code             error;
+      const std::filesystem::path here =
+        std::filesystem::weakly_canonical(filename, error);
+      for (const std::string &link : chain)
+        if (std::filesystem::weakly_canonical(link, error) == here)
+          {
+            std::string words;
+            for (const std::string &name : chain)
+              words += "'" + name + "' includes ";
+            throw InputError("Parameter file '" + chain.front() +
+                             "': includes run in a circle: " + words + "'" +
+                             filename + "'.");
+          }
+      std::ifstream in(filename);
+      if (!in)
+        return;
+      chain.push_back(filename);
+      std::string line;
+      while (std::getline(in, line))
+        {
+          line = Utilities::trim(line.substr(0, line.find('#')));
+          if (line.rfind("include", 0) == 0 && line.size() > 7 &&
+              std::isspace(static_cast<unsigned char>(line[7])))
+            check_include_cycles(Utilities::trim(line.substr(7)), chain);
+        }
+      chain.pop_back();
+    }
   } // namespace
 
 
@@ -202,6 +243,8 @@ namespace xcrack
                 "The parameter file '" + filename +
                   "' sets no entry (it is empty or holds only comments).");
     warn_about_repeated_entries(text, filename);
+    std::vector<std::string> chain;
+    check_include_cycles(filename, chain);
     try
       {
         std::istringstream stream(text);

@@ -149,17 +149,35 @@ namespace xcrack
                                  const double k_II,
                                  const double k_III) const
   {
+    // Of degree one in the K's: computed on K's scaled by a power of two
+    // (exact), so that their squares neither underflow nor overflow.
+    const int e = binary_exponent({{k_I, k_II, k_III}});
+    const double          kI = std::scalbn(k_I, -e), kII = std::scalbn(k_II, -e),
+                 kIII = std::scalbn(k_III, -e);
     const Material &material = this->get_material();
     if (equivalent_k_type == EquivalentK::energy_release_rate)
       // sqrt(E' G), G by Irwin's relation (E' / (2 mu) = 1 / (1 - nu) in
       // plane strain and 3D).
-      return std::sqrt(k_I * k_I + k_II * k_II +
-                       material.e_prime(dim) / (2 * material.mu()) * k_III *
-                         k_III);
-    const double k = direction_criterion->equivalent_k(k_I, k_II);
-    return (add_mode_III ?
-              std::sqrt(k * k + k_III * k_III / (1 - material.poisson_ratio)) :
-              k);
+      return std::scalbn(std::sqrt(kI * kI + kII * kII +
+                                   material.e_prime(dim) /
+                                     (2 * material.mu()) * kIII * kIII),
+                         e);
+    const double k = direction_criterion->equivalent_k(kI, kII);
+    return std::scalbn(
+      add_mode_III ? std::sqrt(k * k + kIII * kIII / (1 - material.poisson_ratio)) :
+                     k,
+      e);
+  }
+
+
+
+  template <int dim>
+  int
+  Propagation<dim>::binary_exponent(const std::array<double, 3> &k)
+  {
+    const double largest =
+      std::max({std::abs(k[0]), std::abs(k[1]), std::abs(k[2])});
+    return (largest > 0 && std::isfinite(largest) ? std::ilogb(largest) : 0);
   }
 
 
@@ -191,7 +209,10 @@ namespace xcrack
           return (values.closed ? 0. : std::max(values.k_I, 0.));
         };
         const double kI = k_I_of(v);
-        m.angle         = direction_criterion->kink_angle(kI, v.k_II);
+        // The kink angle is of degree zero in the K's: on scaled ones.
+        const int e = binary_exponent({{kI, v.k_II, 0.}});
+        m.angle     = direction_criterion->kink_angle(std::scalbn(kI, -e),
+                                                  std::scalbn(v.k_II, -e));
         if (std::abs(m.angle) < minimum_kink_angle)
           m.angle = 0;
         m.k_minimum = {{w.k_I, w.k_II, w.k_III}};
@@ -201,11 +222,40 @@ namespace xcrack
         // degree one in the K's.
         m.delta_k = std::abs(
           equivalent_k(kI - k_I_of(w), v.k_II - w.k_II, v.k_III - w.k_III));
-        m.rate = growth_law->rate(m.delta_k, m.k_eq, load_ratio_of(m));
+        // Without contact, closed lips have passed through each other:
+        // the K's there are those of a body that does not exist, and the
+        // point does not grow (contact computes such points properly).
+        m.closed = v.closed && !this->lips_in_contact();
+        if (m.closed)
+          m.angle = 0;
         result.push_back(m);
       }
+    // Speeds relative to the most loaded point's, when they are only that
+    // (a law that does not count cycles): on K's relative to the largest,
+    // so that a large exponent does not underflow everywhere.
+    double k_scale = 0;
+    for (const FrontMove<dim> &m : result)
+      if (!m.closed)
+        k_scale = std::max(k_scale, m.k_eq);
+    const double scale = (counts_cycles() || k_scale == 0 ? 1. : k_scale);
+    for (FrontMove<dim> &m : result)
+      m.rate = (m.closed ? 0. :
+                           growth_law->rate(m.delta_k / scale,
+                                            m.k_eq / scale,
+                                            load_ratio_of(m)));
     scale_advances(result, largest_advance);
     return result;
+  }
+
+
+
+  template <int dim>
+  std::string
+  Propagation<dim>::why_no_rate(const FrontMove<dim> &move) const
+  {
+    return growth_law->why_no_rate(move.delta_k,
+                                   move.k_eq,
+                                   load_ratio_of(move));
   }
 
 

@@ -131,6 +131,15 @@ namespace xcrack
 
 
   template <int dim>
+  bool
+  SimulatorAccess<dim>::lips_in_contact() const
+  {
+    return simulator->contact != nullptr;
+  }
+
+
+
+  template <int dim>
   unsigned int
   SimulatorAccess<dim>::get_step() const
   {

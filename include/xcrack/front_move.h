@@ -29,8 +29,12 @@ namespace xcrack
     double k_eq = 0, delta_k = 0;
     /// K_I, K_II, K_III at the minimum of the load cycle.
     std::array<double, 3> k_minimum = {{0, 0, 0}};
-    /// da/dN (or a relative speed for a quasi-static law).
+    /// da/dN (or a relative speed for a quasi-static law, 1 at the most
+    /// loaded point).
     double rate = 0;
+    /// Lips that passed through each other at the point (K_I < 0 without
+    /// contact): it does not grow.
+    bool closed = false;
     /// Kink angle from e1 towards e2 (radians).
     double angle = 0;
     /// The advance in this step, and the part of it that catches up with
@@ -63,8 +67,8 @@ namespace xcrack
     void
     serialize(Archive &archive, const unsigned int)
     {
-      archive &crack &front &point &k_eq &delta_k &k_minimum &rate &angle
-        &advance &catch_up;
+      archive &crack &front &point &k_eq &delta_k &k_minimum &rate &closed
+        &angle &advance &catch_up;
     }
   };
 } // namespace xcrack

@@ -13,6 +13,8 @@ namespace xcrack
    * file, a killed run leaves the previous version whole, and a write that
    * fails (a full disk, a directory of that name) throws a
    * std::runtime_error naming the file instead of losing results silently.
+   * The temporary file is created anew (exclusively, not through a
+   * symbolic link): whatever stood at its name is removed first.
    */
   void
   write_file(const std::string                         &path,

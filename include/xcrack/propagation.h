@@ -10,6 +10,7 @@
 #include <xcrack/level_set_update/interface.h>
 #include <xcrack/simulator_access.h>
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -101,9 +102,20 @@ namespace xcrack
     double
     equivalent_k(const double k_I, const double k_II, const double k_III) const;
 
+    /// Why the growth law's rate at @p move is not finite (the growth
+    /// law's words).
+    std::string
+    why_no_rate(const FrontMove<dim> &move) const;
+
     /// The load ratio a growth law sees at @p move: 1 - Delta K / K_max.
     static double
     load_ratio_of(const FrontMove<dim> &move);
+
+    /// The binary exponent of the largest of |@p k| (0 if all are zero or
+    /// one is not finite): K's scaled by 2^-exponent are near one, and
+    /// their squares can be formed, however small or large the loads.
+    static int
+    binary_exponent(const std::array<double, 3> &k);
 
     /**
      * Kink angles below this (radians) are taken as zero. A symmetric

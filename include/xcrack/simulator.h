@@ -111,8 +111,32 @@ namespace xcrack
     void
     run_steps();
 
+    /// @name Checks of the input that need the mesh (input_checks.cc)
+    /// @{
+    /**
+     * The loads of both load states must be finite where they are used and
+     * hold the body (setting displacement_scale: how far they can move
+     * it), and a lip pressure needs a crack.
+     */
+    void
+    check_loads();
+    /// Each crack must be one the mesh sees (a cell cut along it).
+    void
+    check_cracks_seen();
+    /// The output directory must be one the run can write into.
+    void
+    check_output_directory() const;
+    /// @}
+
     /// @name Set-up (setup.cc)
     /// @{
+    /// The enrichment (with cracks), the finite elements and their rules.
+    void
+    create_finite_elements(ParameterHandler &prm);
+    /// How the lips touch (`subsection Contact`), the contributions to the
+    /// system, and whether the linear solver can solve it.
+    void
+    create_terms(ParameterHandler &prm);
     /**
      * The cracks' fields, the enrichment, the DoFs, the constraints and
      * the system on the current mesh. With @p may_split, the mesh may
@@ -226,11 +250,6 @@ namespace xcrack
     NonlinearSolver::Result
     solve_load_state(const LoadState<dim> &state);
 
-    /// The load states the run solves (the maximum; with a load cycle
-    /// that linearity cannot give, the minimum too).
-    std::vector<const LoadState<dim> *>
-    load_states() const;
-
     /// Whether every contribution is linear (no contact): one solve per
     /// load state, and K proportional to the loads.
     bool
@@ -291,6 +310,28 @@ namespace xcrack
     /// The fronts per crack, as compute_fracture_parameters() numbers them.
     std::vector<unsigned int>
     fronts_per_crack() const;
+
+    /// Whether the run stops after this step's solve, and why; else
+    /// @p largest (the nominal advance on entry) as the criteria limit it.
+    TerminationCriteria::Verdict
+    step_verdict(double &largest) const;
+
+    /// The step's line on screen, its warnings and statistics, and the end
+    /// of the run if @p verdict says so.
+    void
+    report_step(const TerminationCriteria::Verdict &verdict,
+                const double                        delta_cycles,
+                const double                        largest);
+
+    /// A stop if a crack has fewer fronts than at the last step (a tip ran
+    /// out of the body): grow() then counts no cycles for the advance.
+    TerminationCriteria::Verdict
+    check_vanished_fronts() const;
+
+    /// A failure if the growth law gives a rate that is not finite at a
+    /// point of front_moves (Forman at K_Ic, a power that overflows).
+    TerminationCriteria::Verdict
+    check_rates() const;
     /// @}
 
     /// @name Checkpoints (checkpoint.cc)

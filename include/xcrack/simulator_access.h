@@ -128,6 +128,11 @@ namespace xcrack
     const Enrichment<dim> *
     get_enrichment() const;
 
+    /// Whether the crack lips carry contact (Contact/Formulation is not
+    /// `none`): without it, lips may pass through each other.
+    bool
+    lips_in_contact() const;
+
     /// The propagation step of the current solve (0: the initial crack).
     unsigned int
     get_step() const;

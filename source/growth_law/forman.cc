@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace xcrack
 {
@@ -54,6 +55,22 @@ namespace xcrack
       return (denominator <= 0 ?
                 std::numeric_limits<double>::infinity() :
                 constants.c * std::pow(delta_k, constants.m) / denominator);
+    }
+
+    template <int dim>
+    std::string
+    Forman<dim>::why_no_rate(const double delta_k,
+                             const double k_max,
+                             const double load_ratio) const
+    {
+      const double r = std::max(load_ratio, 0.);
+      if (delta_k < (1 - r) * toughness)
+        return Interface<dim>::why_no_rate(delta_k, k_max, load_ratio);
+      std::ostringstream words;
+      words << "Delta K reached (1 - R) K_Ic = " << (1 - r) * toughness
+            << " (K_max reached the fracture toughness K_Ic = " << toughness
+            << "): the part fails";
+      return words.str();
     }
 
     XCRACK_REGISTER_PLUGIN(Interface,

@@ -54,6 +54,17 @@ namespace xcrack
 
 
     template <int dim>
+    std::string
+    Interface<dim>::why_no_rate(const double, const double, const double) const
+    {
+      return "the rate overflows (it is beyond the largest number a double "
+             "holds, 1.8e308): the law's constants do not fit the scene's "
+             "units";
+    }
+
+
+
+    template <int dim>
     std::unique_ptr<Interface<dim>>
     create(ParameterHandler &prm, const Simulator<dim> &simulator)
     {
@@ -66,6 +77,8 @@ namespace xcrack
 
 
 
+    template class Interface<2>;
+    template class Interface<3>;
     template std::unique_ptr<Interface<2>>
     create(ParameterHandler &, const Simulator<2> &);
     template std::unique_ptr<Interface<3>>

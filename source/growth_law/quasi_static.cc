@@ -31,8 +31,8 @@ namespace xcrack
         const Plugins::ScopedSubsection scope(prm, "Quasi-static");
         exponent = prm.get_double("Exponent");
       }
-      toughness = this->get_material().fracture_toughness;
-      check_input(toughness > 0,
+      // The load factor K_Ic / max K_eq (Propagation) needs it.
+      check_input(this->get_material().fracture_toughness > 0,
                   "Propagation/Growth law/Model name = quasi-static needs "
                   "the fracture toughness: set Material/Fracture toughness "
                   "(K_Ic > 0).");
@@ -44,7 +44,8 @@ namespace xcrack
     double
     QuasiStatic<dim>::rate(const double, const double k_max, const double) const
     {
-      return std::pow(std::max(k_max, 0.) / toughness, exponent);
+      // k_max relative to the step's largest (counts_cycles()).
+      return std::pow(std::max(k_max, 0.), exponent);
     }
 
 

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <sstream>
 #include <tuple>
 
 namespace xcrack
@@ -69,10 +70,14 @@ namespace xcrack
                                     body_force.get(),
                                     nullptr,
                                     contact_traction);
-    // Where the lips touch at the front, it is closed.
-    if (contact)
-      for (FrontValues<dim> &v : front_values)
-        v.closed = (contact->closed_fraction(v.point.position, v.r_inf) > 0.5);
+    // Where the lips touch at the front, it is closed. Without contact, a
+    // negative K_I says that the lips pass through each other there: the
+    // point is closed too, and its K's are those of a body that does not
+    // exist (Propagation does not grow it).
+    for (FrontValues<dim> &v : front_values)
+      v.closed =
+        (contact ? contact->closed_fraction(v.point.position, v.r_inf) > 0.5 :
+                   v.k_I < 0);
     if (!report)
       return;
     const bool estimate = fracture_parameters.error_estimate;
@@ -121,6 +126,25 @@ namespace xcrack
             << std::endl;
     };
 
+    // What closed points mean: with contact, lips that touch; without, a
+    // negative K_I, lips that pass through each other.
+    const auto closed_words = [&](const unsigned int n_closed,
+                                  const unsigned int n) {
+      std::ostringstream words;
+      const std::string  where =
+        (n == 1 ? "the tip" :
+                  std::to_string(n_closed) + " of its " + std::to_string(n) +
+                    " points");
+      if (contact)
+        words << "    the lips are closed at " << where << ": K_I counts as 0"
+              << (n == 1 ? "" : " there");
+      else
+        words << "    K_I < 0 at " << where << ": the lips pass through each "
+              << "other (Contact/Formulation = none); closed, "
+              << (n == 1 ? "it does" : "they do") << " not grow";
+      return words.str();
+    };
+
     // On screen, K's are rounded to 1e-6 of the largest one: a K that
     // vanishes by symmetry then reads 0 rather than round-off that differs
     // between builds (the CSV files and the statistics keep every digit).
@@ -150,8 +174,7 @@ namespace xcrack
                       "")
                 << std::endl;
           if (v.closed)
-            out << "    the lips are closed at the tip: K_I counts as 0"
-                << std::endl;
+            out << closed_words(1, 1) << std::endl;
           warn_crown(v);
           const std::string suffix = "_" + std::to_string(i + 1);
           statistics.add_value("K_I" + suffix, v.k_I);
@@ -245,8 +268,7 @@ namespace xcrack
           for (const auto &v : values)
             n_closed += (v.front == f && v.closed);
           if (n_closed > 0)
-            out << "    the lips are closed at " << n_closed << " of its " << n
-                << " points: K_I counts as 0 there" << std::endl;
+            out << closed_words(n_closed, n) << std::endl;
           for (const auto &v : values)
             if (v.front == f && !v.crown_clear)
               {
@@ -656,9 +678,7 @@ namespace xcrack
   Simulator<dim>::write_front_table(std::ostream &csv) const
   {
     csv << "index,s,x,y,z,K_I,K_II,K_III,G,G_Irwin,r_inf,r_sup,"
-           "K_I_jump,K_II_jump,K_III_jump,front";
-    if (contact)
-      csv << ",closed";
+           "K_I_jump,K_II_jump,K_III_jump,front,closed";
     // The estimates of K_exact - K, when asked for.
     const bool errors = fracture_parameters.error_estimate;
     if (errors)
@@ -679,18 +699,21 @@ namespace xcrack
             << (dim == 3 ? v.point.position[dim - 1] : 0.) << ',' << v.k_I
             << ',' << v.k_II << ',' << v.k_III << ',' << v.g << ',' << v.g_irwin
             << ',' << v.r_inf << ',' << v.r_sup << ',' << v.k_jump[0] << ','
-            << v.k_jump[1] << ',' << v.k_jump[2] << ',' << v.front + 1;
-        if (contact)
-          csv << ',' << v.closed;
+            << v.k_jump[1] << ',' << v.k_jump[2] << ',' << v.front + 1 << ','
+            << v.closed;
         if (errors)
           csv << ',' << v.k_error[0] << ',' << v.k_error[1] << ','
               << v.k_error[2];
         if (moves)
           {
+            // A rate that is not finite ended the run (check_rates()): its
+            // field stays empty rather than holding inf or nan.
             const auto &m = front_moves[i];
             csv << ',' << m.k_minimum[0] << ',' << m.k_minimum[1] << ','
-                << m.k_minimum[2] << ',' << m.k_eq << ',' << m.delta_k << ','
-                << m.rate << ',' << m.angle << ',' << m.advance;
+                << m.k_minimum[2] << ',' << m.k_eq << ',' << m.delta_k << ',';
+            if (std::isfinite(m.rate))
+              csv << m.rate;
+            csv << ',' << m.angle << ',' << m.advance;
           }
         csv << '\n';
       }

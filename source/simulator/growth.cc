@@ -26,12 +26,16 @@ namespace xcrack
   {
     // The moves at the nominal advance, and the cycles the last advance
     // took (known now that K at its end is).
-    front_moves         = propagation.moves(front_values,
+    front_moves = propagation.moves(front_values,
                                     minimum_front_values(),
                                     fronts_per_crack(),
                                     propagation.maximum_advance());
-    double delta_cycles = 0;
-    if (!previous_moves.empty())
+    // A tip or front that vanished in the last advance (it ran out of the
+    // body or into a hole) ends the run whatever the criteria: the cycles
+    // of that advance cannot be told without K at its end.
+    TerminationCriteria::Verdict verdict      = check_vanished_fronts();
+    double                       delta_cycles = 0;
+    if (!previous_moves.empty() && !verdict.stop)
       {
         delta_cycles = propagation.cycles(previous_moves, front_moves);
         cycles += delta_cycles;
@@ -39,7 +43,26 @@ namespace xcrack
     statistics.add_value("cycles", cycles);
 
     // What ends the run, if anything; else how far the next step may go.
-    TerminationCriteria::Verdict verdict;
+    double largest = propagation.maximum_advance();
+    if (!verdict.stop)
+      verdict = step_verdict(largest);
+    Propagation<dim>::scale_advances(front_moves, verdict.stop ? 0. : largest);
+    if (!verdict.stop)
+      {
+        propagation.catch_up(previous_moves, delta_cycles, front_moves);
+        previous_moves = front_moves;
+      }
+    report_step(verdict, delta_cycles, largest);
+    return verdict.stop;
+  }
+
+
+
+  template <int dim>
+  TerminationCriteria::Verdict
+  Simulator<dim>::step_verdict(double &largest) const
+  {
+    TerminationCriteria::Verdict verdict = check_rates();
     for (const auto &criterion : termination_criteria)
       if (!verdict.stop)
         verdict = criterion->check();
@@ -49,23 +72,44 @@ namespace xcrack
         verdict.reason = "the last step (Propagation/Number of steps = " +
                          std::to_string(propagation.n_steps()) + ")";
       }
-    double largest = propagation.maximum_advance();
-    if (!verdict.stop)
-      for (const auto &criterion : termination_criteria)
-        largest = std::min(largest, criterion->limit_advance(largest));
-    if (!verdict.stop &&
-        (!Propagation<dim>::fastest(front_moves) || !(largest > 0)))
+    if (verdict.stop)
+      return verdict;
+    for (const auto &criterion : termination_criteria)
+      largest = std::min(largest, criterion->limit_advance(largest));
+    unsigned int n_closed = 0, n_loaded = 0;
+    for (const FrontMove<dim> &m : front_moves)
+      {
+        n_closed += m.closed;
+        n_loaded += (m.k_eq > 0);
+      }
+    if (!Propagation<dim>::fastest(front_moves))
+      {
+        verdict.stop   = true;
+        verdict.reason = "no front point grows any more";
+        if (n_closed > 0 && n_closed == front_moves.size())
+          verdict.reason += " (K_I < 0 everywhere: the lips are closed; set "
+                            "Contact/Formulation to let them touch)";
+        else if (n_loaded > 0)
+          verdict.reason += " (every rate is zero: Delta K is below the "
+                            "growth law's threshold, or the rate below the "
+                            "smallest number a double holds)";
+      }
+    else if (!(largest > 0))
       {
         verdict.stop   = true;
         verdict.reason = "no front point grows any more";
       }
-    Propagation<dim>::scale_advances(front_moves, verdict.stop ? 0. : largest);
-    if (!verdict.stop)
-      {
-        propagation.catch_up(previous_moves, delta_cycles, front_moves);
-        previous_moves = front_moves;
-      }
+    return verdict;
+  }
 
+
+
+  template <int dim>
+  void
+  Simulator<dim>::report_step(const TerminationCriteria::Verdict &verdict,
+                              const double delta_cycles,
+                              const double largest)
+  {
     double size = 0, k_max = 0, delta_k = 0;
     for (const auto &surface : crack_surfaces)
       size += surface.measure();
@@ -112,6 +156,15 @@ namespace xcrack
         line << std::defaultfloat;
       }
     pcout << line.str() << std::endl;
+    unsigned int n_closed = 0;
+    for (const FrontMove<dim> &m : front_moves)
+      n_closed += m.closed;
+    if (n_closed > 0)
+      pcout << "  Warning: K_I < 0 at " << n_closed << " of "
+            << front_moves.size() << " front points: the lips pass through "
+            << "each other there (Contact/Formulation = none); they are "
+            << "closed and do not grow (`closed` in the front file)."
+            << std::endl;
     for (const FrontValues<dim> &v : front_values)
       if (!v.crown_clear)
         {
@@ -128,7 +181,57 @@ namespace xcrack
           (verdict.failure ? "Failure: " : "End: ") + verdict.reason + ".";
         pcout << end_reason << std::endl;
       }
-    return verdict.stop;
+  }
+
+
+
+  template <int dim>
+  TerminationCriteria::Verdict
+  Simulator<dim>::check_vanished_fronts() const
+  {
+    TerminationCriteria::Verdict verdict;
+    const std::vector<unsigned int> now = fronts_per_crack();
+    std::vector<unsigned int>       before(now.size(), 0);
+    for (const FrontMove<dim> &m : previous_moves)
+      if (m.crack < before.size())
+        before[m.crack] = std::max(before[m.crack], m.front + 1);
+    for (unsigned int c = 0; c < now.size(); ++c)
+      if (now[c] < before[c])
+        {
+          std::ostringstream reason;
+          reason << "crack " << c + 1 << " has " << now[c]
+                 << (dim == 2 ? " tips" : " fronts") << " after the last "
+                 << "advance instead of " << before[c] << ": one ran out of "
+                 << "the body or into a hole (its cycles are not counted: "
+                 << "they need K at the advance's end)";
+          verdict.stop   = true;
+          verdict.reason = reason.str();
+          break;
+        }
+    return verdict;
+  }
+
+
+
+  template <int dim>
+  TerminationCriteria::Verdict
+  Simulator<dim>::check_rates() const
+  {
+    TerminationCriteria::Verdict verdict;
+    for (const FrontMove<dim> &m : front_moves)
+      if (!std::isfinite(m.rate))
+        {
+          std::ostringstream reason;
+          reason << "the growth law gives no finite rate at ("
+                 << m.point.position << "), Delta K = " << m.delta_k
+                 << ", K_max = " << m.k_eq << ": "
+                 << propagation.why_no_rate(m);
+          verdict.stop    = true;
+          verdict.failure = true;
+          verdict.reason  = reason.str();
+          break;
+        }
+    return verdict;
   }
 
 

@@ -29,6 +29,12 @@ namespace xcrack
            const double k_max,
            const double load_ratio) const override;
 
+      /// At Delta K >= (1 - R) K_Ic the part fails.
+      std::string
+      why_no_rate(const double delta_k,
+                  const double k_max,
+                  const double load_ratio) const override;
+
     private:
       PowerLawConstants constants;
       double            toughness = 0;

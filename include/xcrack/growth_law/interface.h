@@ -6,6 +6,7 @@
 #include <xcrack/plugins.h>
 
 #include <memory>
+#include <string>
 
 namespace xcrack
 {
@@ -40,9 +41,20 @@ namespace xcrack
            const double load_ratio) const = 0;
 
       /**
+       * Why rate() gave a value that is not finite for these arguments,
+       * for the message that ends the run (it names the point and its K's).
+       */
+      virtual std::string
+      why_no_rate(const double delta_k,
+                  const double k_max,
+                  const double load_ratio) const;
+
+      /**
        * Whether rate() is a rate per load cycle. A quasi-static law returns
        * relative speeds instead: the front advances in their proportion and
-       * no cycles are counted.
+       * no cycles are counted; its K's are given relative to the step's
+       * largest K_eq (1 at the most loaded point), so that a steep law does
+       * not underflow at every point.
        */
       virtual bool
       counts_cycles() const

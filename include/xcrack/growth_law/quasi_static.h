@@ -36,7 +36,7 @@ namespace xcrack
       counts_cycles() const override;
 
     private:
-      double exponent = 2, toughness = 0;
+      double exponent = 2;
     };
   } // namespace GrowthLaw
 } // namespace xcrack
