@@ -1,9 +1,8 @@
 #include <xcrack/output_file.h>
 
-#include <ext/stdio_filebuf.h>
-
 #include <cerrno>
 #include <cstring>
+#include <ext/stdio_filebuf.h>
 #include <fcntl.h>
 #include <filesystem>
 #include <ostream>
@@ -22,9 +21,9 @@ namespace xcrack
     // outside the output directory.
     std::error_code ignored;
     std::filesystem::remove(tmp, ignored);
-    const int fd =
-      ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC,
-             0666);
+    const int fd = ::open(tmp.c_str(),
+                          O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC,
+                          0666);
     if (fd < 0)
       throw std::runtime_error("could not create " + tmp + ": " +
                                std::strerror(errno) +

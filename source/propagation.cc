@@ -151,22 +151,23 @@ namespace xcrack
   {
     // Of degree one in the K's: computed on K's scaled by a power of two
     // (exact), so that their squares neither underflow nor overflow.
-    const int e = binary_exponent({{k_I, k_II, k_III}});
-    const double          kI = std::scalbn(k_I, -e), kII = std::scalbn(k_II, -e),
-                 kIII = std::scalbn(k_III, -e);
+    const int    e  = binary_exponent({{k_I, k_II, k_III}});
+    const double kI = std::scalbn(k_I, -e), kII = std::scalbn(k_II, -e),
+                 kIII        = std::scalbn(k_III, -e);
     const Material &material = this->get_material();
     if (equivalent_k_type == EquivalentK::energy_release_rate)
       // sqrt(E' G), G by Irwin's relation (E' / (2 mu) = 1 / (1 - nu) in
       // plane strain and 3D).
       return std::scalbn(std::sqrt(kI * kI + kII * kII +
-                                   material.e_prime(dim) /
-                                     (2 * material.mu()) * kIII * kIII),
+                                   material.e_prime(dim) / (2 * material.mu()) *
+                                     kIII * kIII),
                          e);
     const double k = direction_criterion->equivalent_k(kI, kII);
-    return std::scalbn(
-      add_mode_III ? std::sqrt(k * k + kIII * kIII / (1 - material.poisson_ratio)) :
-                     k,
-      e);
+    return std::scalbn(add_mode_III ?
+                         std::sqrt(k * k +
+                                   kIII * kIII / (1 - material.poisson_ratio)) :
+                         k,
+                       e);
   }
 
 

@@ -1,3 +1,4 @@
+#include <xcrack/command_line.h>
 #include <xcrack/output_file.h>
 #include <xcrack/run_record.h>
 
@@ -45,20 +46,6 @@ namespace xcrack
         }
       return result + "\"";
     }
-
-    /// The command line of this process (Linux), arguments separated by
-    /// spaces.
-    std::string
-    command_line()
-    {
-      std::ifstream in("/proc/self/cmdline", std::ios::binary);
-      std::string   text((std::istreambuf_iterator<char>(in)),
-                       std::istreambuf_iterator<char>());
-      std::replace(text.begin(), text.end(), '\0', ' ');
-      while (!text.empty() && text.back() == ' ')
-        text.pop_back();
-      return text;
-    }
   } // namespace
 
 
@@ -79,26 +66,84 @@ namespace xcrack
     command_line = xcrack::command_line();
     if (!root)
       return;
-    if (!resumed)
+    // The results this run continues: the files of the earlier processes
+    // of the run (the directory held only this run's since it started),
+    // so that the record lists every file of the run, not only those the
+    // resumed process writes.
+    const std::regex results(
+      "(front_.*\\.csv|crack[0-9]*-.*\\.vtu|crack\\.pvd|solution-.*\\.p?vtu|"
+      "solution\\.pvd|statistics\\.csv|parameters\\.prm)");
+    if (resumed)
       {
-        // What an earlier run wrote and this one will write anew: files,
-        // and the checkpoint directories (nothing else of the user's).
-        const std::regex files(
-          "(front_.*\\.csv|crack[0-9]*-.*\\.vtu|crack\\.pvd|solution-.*\\.p?vtu|"
-          "solution\\.pvd|statistics\\.csv|growth_.*\\.png|front\\.png|"
-          "run\\.json|.*\\.tmp)");
-        const std::regex checkpoints("checkpoint(\\.tmp|\\.old)?");
         for (const auto &entry : std::filesystem::directory_iterator(directory))
           {
             const std::string name = entry.path().filename().string();
-            if (entry.is_regular_file() && std::regex_match(name, files))
+            if ((entry.is_regular_file() && std::regex_match(name, results)) ||
+                (entry.is_directory() && name == "checkpoint"))
+              files.push_back(name);
+          }
+        std::sort(files.begin(), files.end());
+      }
+    else
+      {
+        // What an earlier run wrote and this one will write anew (files,
+        // parameters.prm, the checkpoint directories; nothing else of the
+        // user's) goes aside into .earlier until this run's first results
+        // are written (keep_results()), and comes back if the run stops on
+        // bad input before (restore_earlier()). A stale .earlier is that
+        // of a run killed in its first solve: its results were replaced.
+        const std::regex files(
+          "(front_.*\\.csv|crack[0-9]*-.*\\.vtu|crack\\.pvd|solution-.*\\.p?vtu|"
+          "solution\\.pvd|statistics\\.csv|growth_.*\\.png|front\\.png|"
+          "run\\.json|parameters\\.prm)");
+        const std::regex            checkpoints("checkpoint(\\.tmp|\\.old)?");
+        const std::regex            temporary(".*\\.tmp");
+        const std::filesystem::path earlier =
+          std::filesystem::path(directory) / ".earlier";
+        std::filesystem::remove_all(earlier);
+        std::filesystem::create_directory(earlier);
+        for (const auto &entry : std::filesystem::directory_iterator(directory))
+          {
+            const std::string name = entry.path().filename().string();
+            if (entry.is_regular_file() && std::regex_match(name, temporary))
               std::filesystem::remove(entry.path());
-            else if (entry.is_directory() &&
-                     std::regex_match(name, checkpoints))
-              std::filesystem::remove_all(entry.path());
+            else if ((entry.is_regular_file() &&
+                      std::regex_match(name, files)) ||
+                     (entry.is_directory() &&
+                      std::regex_match(name, checkpoints)))
+              std::filesystem::rename(entry.path(), earlier / name);
           }
       }
     write();
+  }
+
+
+
+  void
+  RunRecord::keep_results()
+  {
+    if (root)
+      std::filesystem::remove_all(std::filesystem::path(directory) /
+                                  ".earlier");
+  }
+
+
+
+  void
+  RunRecord::restore_earlier()
+  {
+    const std::filesystem::path earlier =
+      std::filesystem::path(directory) / ".earlier";
+    if (!root || !std::filesystem::is_directory(earlier))
+      return;
+    for (const std::string &name : files)
+      std::filesystem::remove_all(std::filesystem::path(directory) / name);
+    std::filesystem::remove(std::filesystem::path(directory) / "run.json");
+    for (const auto &entry : std::filesystem::directory_iterator(earlier))
+      std::filesystem::rename(entry.path(),
+                              std::filesystem::path(directory) /
+                                entry.path().filename());
+    std::filesystem::remove_all(earlier);
   }
 
 

@@ -19,7 +19,9 @@ namespace xcrack
   /**
    * The checkpoint of the propagation run whose output directory is
    * @p directory (its `checkpoint`, or `checkpoint.old` if a kill caught
-   * the renaming of a new one); InputError if there is none.
+   * the renaming of a new one); InputError if there is none, or if one of
+   * its files is missing or differs from the checksums written with it
+   * (named).
    */
   std::string
   checkpoint_of(const std::string &directory);

@@ -18,22 +18,33 @@ namespace xcrack
    * it wrote. A run killed on the way leaves `running`: its files are
    * incomplete. Rewritten atomically whenever it changes (rank 0).
    *
-   * A new run (not a resumed one) first removes the numbered results of an
+   * A new run (not a resumed one) first moves the numbered results of an
    * earlier run in the same directory (front_*.csv, crack*.vtu,
-   * solution-*, the .pvd series, statistics.csv, the checkpoint, the
-   * figures of contrib/), so that no stale step is taken for one of this
-   * run's; other files are left alone. This happens only once the run has
-   * passed all its input checks.
+   * solution-*, the .pvd series, statistics.csv, parameters.prm, run.json,
+   * the checkpoint, the figures of contrib/) into `.earlier`, so that no
+   * stale step is taken for one of this run's; other files are left
+   * alone. Once the run's first results are written they go; if an input
+   * check of the first solve fails before, they come back. This happens
+   * only once the run has passed the input checks of its constructor.
    */
   class RunRecord
   {
   public:
     RunRecord(const std::string &directory, const MPI_Comm communicator);
 
-    /// Clear an earlier run's results (unless @p resumed) and record the
-    /// start.
+    /// Clear an earlier run's results (unless @p resumed: then list the
+    /// results already there, the run's own) and record the start.
     void
     start(const bool resumed);
+
+    /// The run's first results are written: the earlier run's go.
+    void
+    keep_results();
+
+    /// The run stopped on bad input before its first results: remove what
+    /// it wrote and bring the earlier run's results back.
+    void
+    restore_earlier();
 
     /// A file the run wrote (a name in the output directory).
     void

@@ -22,6 +22,7 @@
 #include <xcrack/crack/crack_set.h>
 #include <xcrack/crack/crack_surface.h>
 #include <xcrack/crack/level_set_fields.h>
+#include <xcrack/directory_lock.h>
 #include <xcrack/fracture/interaction_integral.h>
 #include <xcrack/fracture/k_error_estimator.h>
 #include <xcrack/front_move.h>
@@ -125,7 +126,7 @@ namespace xcrack
     check_cracks_seen();
     /// The output directory must be one the run can write into.
     void
-    check_output_directory() const;
+    check_output_directory();
     /// @}
 
     /// @name Set-up (setup.cc)
@@ -311,6 +312,14 @@ namespace xcrack
     std::vector<unsigned int>
     fronts_per_crack() const;
 
+    /**
+     * One step: its solves (several meshes at step 0 or with a goal), the
+     * moves, the files of its last solve (@p key), and the advance to the
+     * next step. Whether the run stops.
+     */
+    bool
+    run_step(std::string &key);
+
     /// Whether the run stops after this step's solve, and why; else
     /// @p largest (the nominal advance on entry) as the criteria limit it.
     TerminationCriteria::Verdict
@@ -476,7 +485,15 @@ namespace xcrack
     /// out of the constructor would print a warning.
     std::unique_ptr<TimerOutput> timer;
 
-    ParameterHandler       &prm;
+    ParameterHandler &prm;
+    /// Every parameter of the run (ShortPRM), printed once by run_steps():
+    /// parameters.prm and each checkpoint's copy.
+    std::string parameters_text;
+    /// The lock on the output directory, held for the run (rank 0).
+    std::unique_ptr<DirectoryLock> output_lock;
+    /// Whether a solve's files were written (or the run resumed): an
+    /// input check that fails after that ends the run instead.
+    bool                    results_written = false;
     RunParameters           run_parameters;
     FunctionConstants       function_constants;
     Material                material;

@@ -4,14 +4,19 @@
 #include <xcrack/run.h>
 #include <xcrack/simulator.h>
 
+#include <algorithm>
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
+#include <boost/crc.hpp>
 #include <boost/serialization/map.hpp>
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <utility>
+#include <vector>
 
 namespace xcrack
 {
@@ -20,6 +25,76 @@ namespace xcrack
     /// The version of the checkpoint format: a change of the state below
     /// must change it, so that an old checkpoint is refused, not misread.
     constexpr unsigned int checkpoint_version = 4;
+
+    /// The CRC-32 and the size of the file @p path.
+    std::pair<std::uint32_t, std::uintmax_t>
+    checksum_of(const std::filesystem::path &path)
+    {
+      std::ifstream      in(path, std::ios::binary);
+      boost::crc_32_type crc;
+      std::vector<char>  buffer(1 << 16);
+      std::uintmax_t     size = 0;
+      while (in.read(buffer.data(), buffer.size()) || in.gcount() > 0)
+        {
+          crc.process_bytes(buffer.data(), in.gcount());
+          size += in.gcount();
+        }
+      return {crc.checksum(), size};
+    }
+
+    /**
+     * Write `checksums` in the checkpoint @p dir: a line per file of it
+     * (name, size, CRC-32), so that a resume refuses a file changed or
+     * damaged after it was written, by name, before anything reads it.
+     */
+    void
+    write_checksums(const std::filesystem::path &dir)
+    {
+      std::vector<std::string> names;
+      for (const auto &entry : std::filesystem::directory_iterator(dir))
+        if (entry.is_regular_file())
+          names.push_back(entry.path().filename().string());
+      std::sort(names.begin(), names.end());
+      std::ofstream out(dir / "checksums");
+      for (const std::string &name : names)
+        {
+          const auto [crc, size] = checksum_of(dir / name);
+          out << name << ' ' << size << ' ' << crc << '\n';
+        }
+      out.close();
+      AssertThrow(out,
+                  ExcMessage("Could not write the checkpoint in " +
+                             dir.string() + "."));
+    }
+
+    /// InputError naming the first file of the checkpoint @p dir that is
+    /// missing or differs from what its `checksums` say.
+    void
+    check_checksums(const std::filesystem::path &dir,
+                    const std::string           &directory)
+    {
+      std::ifstream in(dir / "checksums");
+      check_input(static_cast<bool>(in),
+                  "--resume " + directory + ": " +
+                    (dir / "checksums").string() +
+                    " is missing: the checkpoint is incomplete or was "
+                    "written by an older xcrack.");
+      std::string    name;
+      std::uintmax_t size = 0;
+      std::uint32_t  crc  = 0;
+      while (in >> name >> size >> crc)
+        {
+          const std::filesystem::path file = dir / name;
+          check_input(std::filesystem::is_regular_file(file),
+                      "--resume " + directory + ": " + file.string() +
+                        " is missing: the checkpoint is damaged.");
+          check_input(checksum_of(file) == std::make_pair(crc, size),
+                      "--resume " + directory + ": " + file.string() +
+                        " is not the file the run wrote (changed or "
+                        "damaged since): the resume is refused. Start the "
+                        "run anew to change its parameters.");
+        }
+    }
   } // namespace
 
 
@@ -67,9 +142,20 @@ namespace xcrack
         AssertThrow(file,
                     ExcMessage("Could not write the checkpoint in " +
                                tmp.string() + "."));
-        // Every parameter, so that the run resumes from the checkpoint alone.
-        prm.print_parameters((tmp / "parameters.prm").string(),
-                             ParameterHandler::ShortPRM);
+        // Every parameter, so that the run resumes from the checkpoint alone
+        // (printed once per run: ParameterHandler takes 10 ms for it).
+        std::ofstream parameters(tmp / "parameters.prm");
+        parameters << parameters_text;
+        parameters.close();
+        AssertThrow(parameters,
+                    ExcMessage("Could not write the checkpoint in " +
+                               tmp.string() + "."));
+      }
+    // Every rank's part of the mesh is written.
+    MPI_Barrier(mpi_communicator);
+    if (root)
+      {
+        write_checksums(tmp);
         if (fs::exists(done))
           fs::rename(done, old);
         fs::rename(tmp, done);
@@ -160,7 +246,10 @@ namespace xcrack
       {
         const fs::path dir = fs::path(directory) / name;
         if (fs::exists(dir / "state") && fs::exists(dir / "parameters.prm"))
-          return dir.string();
+          {
+            check_checksums(dir, directory);
+            return dir.string();
+          }
       }
     throw InputError("--resume " + directory +
                      ": no checkpoint there (a directory 'checkpoint' with "

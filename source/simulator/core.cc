@@ -200,6 +200,17 @@ namespace xcrack
         timer.reset();
         throw std::runtime_error(message);
       }
+    catch (const InputError &e)
+      {
+        // Bad input met in the first solve (crowns without a vertex): the
+        // earlier run's results come back, as if the run had not started.
+        if (!results_written)
+          run_record->restore_earlier();
+        else
+          run_record->finish("failed", message_of(e));
+        timer.reset();
+        throw;
+      }
     catch (const std::exception &e)
       {
         // The files written so far stay; run.json says they are a failed
@@ -218,11 +229,14 @@ namespace xcrack
   void
   Simulator<dim>::run_steps()
   {
+    {
+      std::ostringstream text;
+      prm.print_parameters(text, ParameterHandler::ShortPRM);
+      parameters_text = text.str();
+    }
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       write_file(run_parameters.output_directory + "/parameters.prm",
-                 [&](std::ostream &out) {
-                   prm.print_parameters(out, ParameterHandler::ShortPRM);
-                 });
+                 [&](std::ostream &out) { out << parameters_text; });
     run_record->add_file("parameters.prm");
 
     pcout << "xcrack: " << dim << "D linear elasticity, Q" << degree
@@ -259,6 +273,7 @@ namespace xcrack
         read_checkpoint(resume_directory);
         pcout << "Resumed at step " << step << " (" << cycles
               << " cycles) from " << resume_directory << std::endl;
+        results_written = true;
       }
 
     std::string key;
@@ -270,49 +285,80 @@ namespace xcrack
       }
     for (bool stop = false; !stop;)
       {
-        // Step 0 may be solved on several successively refined meshes (a
-        // convergence study of the initial crack); every step after it
-        // on the mesh its fronts adapted. A strategy with a goal refines
-        // every step until the goal is met, on at most Number of meshes.
-        const unsigned int n_meshes =
-          (step == 0 || goal ? refinement_parameters.n_meshes : 1);
-        for (unsigned int mesh = 0; mesh < n_meshes; ++mesh)
+        // A check on the input that fails once results are written (two
+        // cracks grown into each other, a crown left without a vertex) is
+        // not bad input: it is where the run got to. It ends the run with
+        // what it met; the results so far stand.
+        try
           {
-            if (mesh > 0)
-              {
-                TimerOutput::Scope t(*timer, "refine");
-                // (check_mesh_goal() marked the cells already.)
-                if (goal)
-                  execute_refinement();
-                else
-                  refine_mesh();
-              }
-            solve_and_report(mesh, n_meshes);
-            bool last = (mesh + 1 == n_meshes);
-            if (goal)
-              last = check_mesh_goal(last);
-            // The last mesh of a growth step first computes the moves (its
-            // front file shows them).
-            if (propagation.enabled() && last)
-              stop = grow();
-            key = Utilities::int_to_string(step, 3) +
-                  (n_meshes > 1 ? "." + Utilities::int_to_string(mesh, 2) : "");
-            finish_solve(key);
-            if (last)
-              break;
+            stop = run_step(key);
           }
-        if (!propagation.enabled() || stop)
-          break;
-        if (propagation.corrects_directions())
-          correct_directions(key);
-        advance_cracks();
-        ++step;
+        catch (const InputError &e)
+          {
+            if (!results_written)
+              throw;
+            end_reason = "End: step " + std::to_string(step) +
+                         " cannot be solved: " + e.what();
+            pcout << end_reason << std::endl;
+            break;
+          }
       }
 
     if (exact_solution && statistics.n_rows() > 1 && !propagation.enabled())
       print_convergence_table();
     if (run_parameters.timing_summary)
       timer->print_summary();
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::run_step(std::string &key)
+  {
+    // Step 0 may be solved on several successively refined meshes (a
+    // convergence study of the initial crack); every step after it on the
+    // mesh its fronts adapted. A strategy with a goal refines every step
+    // until the goal is met, on at most Number of meshes.
+    const bool         goal = mesh_refinement->has_goal();
+    const unsigned int n_meshes =
+      (step == 0 || goal ? refinement_parameters.n_meshes : 1);
+    bool stop = false;
+    for (unsigned int mesh = 0; mesh < n_meshes; ++mesh)
+      {
+        if (mesh > 0)
+          {
+            TimerOutput::Scope t(*timer, "refine");
+            // (check_mesh_goal() marked the cells already.)
+            if (goal)
+              execute_refinement();
+            else
+              refine_mesh();
+          }
+        solve_and_report(mesh, n_meshes);
+        bool last = (mesh + 1 == n_meshes);
+        if (goal)
+          last = check_mesh_goal(last);
+        // The last mesh of a growth step first computes the moves (its
+        // front file shows them).
+        if (propagation.enabled() && last)
+          stop = grow();
+        key = Utilities::int_to_string(step, 3) +
+              (n_meshes > 1 ? "." + Utilities::int_to_string(mesh, 2) : "");
+        finish_solve(key);
+        if (!results_written)
+          run_record->keep_results();
+        results_written = true;
+        if (last)
+          break;
+      }
+    if (!propagation.enabled() || stop)
+      return true;
+    if (propagation.corrects_directions())
+      correct_directions(key);
+    advance_cracks();
+    ++step;
+    return false;
   }
 
 

@@ -107,8 +107,8 @@ namespace xcrack
   template <int dim>
   void
   Simulator<dim>::report_step(const TerminationCriteria::Verdict &verdict,
-                              const double delta_cycles,
-                              const double largest)
+                              const double                        delta_cycles,
+                              const double                        largest)
   {
     double size = 0, k_max = 0, delta_k = 0;
     for (const auto &surface : crack_surfaces)
@@ -189,7 +189,7 @@ namespace xcrack
   TerminationCriteria::Verdict
   Simulator<dim>::check_vanished_fronts() const
   {
-    TerminationCriteria::Verdict verdict;
+    TerminationCriteria::Verdict    verdict;
     const std::vector<unsigned int> now = fronts_per_crack();
     std::vector<unsigned int>       before(now.size(), 0);
     for (const FrontMove<dim> &m : previous_moves)

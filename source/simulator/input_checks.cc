@@ -102,7 +102,7 @@ namespace xcrack
 
   template <int dim>
   void
-  Simulator<dim>::check_output_directory() const
+  Simulator<dim>::check_output_directory()
   {
     // The output directory must be usable: this is the last check before
     // any result is written (creating it and a probe file touches no
@@ -124,6 +124,22 @@ namespace xcrack
     check_input(Utilities::MPI::min(writable, mpi_communicator) == 1,
                 "Output directory = " + run_parameters.output_directory +
                   ": cannot create it or write into it (permissions?).");
+    // No other run may write there while this one does (rank 0 holds the
+    // lock; every rank learns whether it got it).
+    std::string refused;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      try
+        {
+          output_lock =
+            std::make_unique<DirectoryLock>(run_parameters.output_directory,
+                                            "Output directory");
+        }
+      catch (const InputError &e)
+        {
+          refused = e.what();
+        }
+    refused = Utilities::MPI::broadcast(mpi_communicator, refused, 0);
+    check_input(refused.empty(), refused);
   }
 
 

@@ -14,7 +14,13 @@
 #   (scaled);
 # - a link planted at a temporary file's name is not followed;
 # - a parameter file that includes itself, `--resume` without a directory:
-#   exit 1 with a message.
+#   exit 1 with a message;
+# - cracks that grow into each other: the run ends there (exit 0, the
+#   reason in run.json), not with an input error;
+# - a second run into the directory of a running one is refused, naming
+#   it; a killed run leaves no lock behind;
+# - a checkpoint edited, truncated or missing a file is refused by name;
+# - bad input found in the first solve keeps the earlier run's results.
 # The scene: the demo (prm/demo.prm), one mesh per step.
 #
 #   growth_checks.sh XCRACK_EXECUTABLE SOURCE_DIRECTORY
@@ -114,6 +120,91 @@ printf 'include a.prm\nset Dimension = 2\n' > b.prm
 "$xcrack" --resume > resume.log 2>&1
 [ $? -eq 1 ] && grep -q "xcrack: --resume takes one argument, the output directory" resume.log ||
   { fail "resume: no clear message"; cat resume.log; }
+
+# 7. Two cracks that grow into each other: the run ends at the step it
+# cannot solve, the steps before stand (not an input error).
+cat > meet.prm <<'PRM'
+set Dimension = 2
+set Output directory = out_meet
+subsection Mesh
+  set Lower corner = -1, -1
+  set Upper corner = 1, 1
+  set Subdivisions = 8, 8
+  set Initial global refinement = 1
+end
+subsection Cracks
+  set Number of cracks = 2
+  subsection Crack 1
+    set Start point = -0.6, 0.01
+    set End point   = -0.2, 0.01
+  end
+  subsection Crack 2
+    set Start point = 0.2, 0.01
+    set End point   = 0.6, 0.01
+  end
+end
+subsection Boundary conditions
+  set Neumann       = 2: 0; -1 | 3: 0; 1
+  set Pinned points = 0, -1: xy | 0, 1: x
+end
+subsection Propagation
+  set Number of steps = 10
+  set Maximum advance = 0.05
+end
+subsection Output
+  set Write vtu = false
+  set Timing summary = false
+end
+PRM
+"$xcrack" meet.prm > meet.log 2>&1
+[ $? -eq 0 ] && grep -q "End: step 2 cannot be solved: Cracks/Crack 1 and Crack 2: their enriched zones meet" meet.log ||
+  { fail "meet: no clear end"; tail -3 meet.log; }
+grep -q '"status": "completed"' out_meet/run.json && [ -f out_meet/front_001.csv ] ||
+  fail "meet: the record or the steps before are missing"
+
+# 8. One run per directory: a second run into the directory of one that is
+# running is refused, naming it; once the first is killed, a run may start.
+{ echo "include $demo"; echo "set Output directory = out_lock"
+  printf 'subsection Output\n  set Write vtu = false\nend\n'; } > lock.prm
+"$xcrack" lock.prm > lock_first.log 2>&1 &
+first=$!
+for _ in $(seq 1 3000); do [ -f out_lock/run.json ] && break; sleep 0.01; done
+"$xcrack" lock.prm > lock_second.log 2>&1
+[ $? -eq 1 ] && grep -q "input error: Output directory = out_lock: another run is writing there (process $first: " lock_second.log ||
+  { fail "lock: the second run was not refused by name"; cat lock_second.log; }
+kill -9 "$first" 2> /dev/null || fail "lock: the first run ended before it could be killed"
+wait "$first" 2> /dev/null
+run 0 lock_after_kill "Step 1:" 1 < <(echo "set Output directory = out_lock")
+
+# 9. A checkpoint changed or damaged after it was written is refused by
+# name before anything reads it.
+run 0 checkpoint "Step 2:" 2 < /dev/null
+resume_refused() {
+  "$xcrack" --resume out_checkpoint > "resume_$1.log" 2>&1
+  [ $? -eq 1 ] && grep -q "input error: --resume out_checkpoint: out_checkpoint/checkpoint/$2" "resume_$1.log" ||
+    { fail "checkpoint $1: not refused by name"; cat "resume_$1.log"; }
+}
+cp -r out_checkpoint/checkpoint saved
+echo "set Output directory = elsewhere" >> out_checkpoint/checkpoint/parameters.prm
+resume_refused edited "parameters.prm is not the file the run wrote"
+rm -rf out_checkpoint/checkpoint && cp -r saved out_checkpoint/checkpoint
+truncate -s 100 out_checkpoint/checkpoint/mesh
+resume_refused truncated "mesh is not the file the run wrote"
+rm -rf out_checkpoint/checkpoint && cp -r saved out_checkpoint/checkpoint
+rm out_checkpoint/checkpoint/mesh_fixed.data
+resume_refused deleted "mesh_fixed.data is missing"
+
+# 10. Bad input found in the first solve (crowns that hold no vertex) loses
+# nothing of the earlier run in the directory.
+run 0 keep "Step 1:" 1 < /dev/null
+cp out_keep/front_001.csv kept.csv
+run 1 keep_bad "input error: Fracture parameters/Crown radii: the crown of tip 1 .* holds no vertex" 1 \
+  < <(echo "set Output directory = out_keep"
+      printf 'subsection Fracture parameters\n  set Crown unit = absolute\n  set Crown radii = 1e-7, 1e-6\nend\n')
+cmp -s kept.csv out_keep/front_001.csv && grep -q '"status": "completed"' out_keep/run.json &&
+  [ -d out_keep/checkpoint ] && [ ! -e out_keep/.earlier ] ||
+  fail "keep: the earlier run's results were not kept"
+grep -q "1e-7" out_keep/parameters.prm && fail "keep: parameters.prm is the failed run's"
 
 if [ "$failures" -eq 0 ]; then
   echo "cli/growth_checks: all checks passed"

@@ -76,6 +76,10 @@ for ranks in 1 2; do
   # in its 8th digit after a resume: allow round-off of the row's scale.
   tolerance=0
   [ "$ranks" -gt 1 ] && tolerance=1e-12
+  # The record of the resumed run lists every file of the run, those the
+  # killed process wrote too.
+  python3 -c "import json, sys; f = lambda d: sorted(json.load(open(d + '/run.json'))['files']); sys.exit(f('whole') != f('killed'))" ||
+    fail "$ranks rank(s): the resumed run's record does not list the files the whole one does"
   same_results whole killed "$tolerance" ||
     { fail "$ranks rank(s): the resumed run differs from the whole one"
       ls killed; cat resumed.log; }

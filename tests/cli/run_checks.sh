@@ -137,7 +137,7 @@ growth() {
   cat base.prm
   printf 'subsection Cracks\n  subsection Crack 1\n    set End point = -0.4, 0.1\n  end\nend\n'
   printf 'subsection Output\n  set Write vtu = true\nend\n'
-  printf 'subsection Propagation\n  set Number of steps = %s\n  set Maximum advance = 0.02\n' "$1"
+  printf 'subsection Propagation\n  set Number of steps = %s\n  set Maximum advance = %s\n' "$1" "${2:-0.02}"
   printf '  subsection Growth law\n    subsection Paris\n      set C = 1e-3\n      set m = 3\n    end\n  end\nend\n'
 }
 growth 4 > four.prm && growth 2 > two.prm
@@ -154,7 +154,8 @@ grep -q '"front_002.csv"' out/run.json || fail "two steps: run.json does not lis
 # A run killed (SIGKILL) at a random moment after it started writing: every
 # result file is its own, run.json says running, and the contrib/ reader
 # warns that the run is incomplete.
-growth 200 > long.prm
+# Short advances: 200 steps that stay inside the body (0.4 in all).
+growth 200 0.002 > long.prm
 sleep 1.1
 touch marker
 "$xcrack" long.prm > long.log 2>&1 &

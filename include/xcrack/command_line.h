@@ -1,0 +1,14 @@
+#ifndef xcrack_command_line_h
+#define xcrack_command_line_h
+
+#include <string>
+
+namespace xcrack
+{
+  /// The command line of this process (Linux), arguments separated by
+  /// spaces: what run.json records and what a directory lock names.
+  std::string
+  command_line();
+} // namespace xcrack
+
+#endif
