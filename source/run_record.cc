@@ -30,6 +30,19 @@ namespace xcrack
       return s.str();
     }
 
+    /// The files a run writes into its output directory (but run.json and
+    /// the checkpoint).
+    const std::regex &
+    result_files()
+    {
+      static const std::regex names(
+        "front_.*\\.csv|crack[0-9]*-.*\\.vtu|crack\\.pvd|solution-.*\\.p?vtu|"
+        "solution\\.pvd|statistics\\.csv|parameters\\.prm");
+      return names;
+    }
+
+
+
     /// @p text as a JSON string.
     std::string
     quoted(const std::string &text)
@@ -66,19 +79,17 @@ namespace xcrack
     command_line = xcrack::command_line();
     if (!root)
       return;
-    // The results this run continues: the files of the earlier processes
-    // of the run (the directory held only this run's since it started),
-    // so that the record lists every file of the run, not only those the
-    // resumed process writes.
-    const std::regex results(
-      "(front_.*\\.csv|crack[0-9]*-.*\\.vtu|crack\\.pvd|solution-.*\\.p?vtu|"
-      "solution\\.pvd|statistics\\.csv|parameters\\.prm)");
     if (resumed)
       {
+        // The results this run continues: the files of the earlier
+        // processes of the run (the directory held only this run's since
+        // it started), so that the record lists every file of the run, not
+        // only those the resumed process writes.
         for (const auto &entry : std::filesystem::directory_iterator(directory))
           {
             const std::string name = entry.path().filename().string();
-            if ((entry.is_regular_file() && std::regex_match(name, results)) ||
+            if ((entry.is_regular_file() &&
+                 std::regex_match(name, result_files())) ||
                 (entry.is_directory() && name == "checkpoint"))
               files.push_back(name);
           }
@@ -86,16 +97,14 @@ namespace xcrack
       }
     else
       {
-        // What an earlier run wrote and this one will write anew (files,
-        // parameters.prm, the checkpoint directories; nothing else of the
-        // user's) goes aside into .earlier until this run's first results
-        // are written (keep_results()), and comes back if the run stops on
-        // bad input before (restore_earlier()). A stale .earlier is that
-        // of a run killed in its first solve: its results were replaced.
-        const std::regex files(
-          "(front_.*\\.csv|crack[0-9]*-.*\\.vtu|crack\\.pvd|solution-.*\\.p?vtu|"
-          "solution\\.pvd|statistics\\.csv|growth_.*\\.png|front\\.png|"
-          "run\\.json|parameters\\.prm)");
+        // What an earlier run wrote and this one will write anew (its
+        // results, run.json, the figures contrib/ drew from them, the
+        // checkpoint directories; nothing else of the user's) goes aside
+        // into .earlier until this run's first results are written
+        // (keep_results()), and comes back if the run stops on bad input
+        // before (restore_earlier()). A stale .earlier is that of a run
+        // killed in its first solve: its results were replaced.
+        const std::regex            figures("growth_.*\\.png|front\\.png");
         const std::regex            checkpoints("checkpoint(\\.tmp|\\.old)?");
         const std::regex            temporary(".*\\.tmp");
         const std::filesystem::path earlier =
@@ -105,10 +114,12 @@ namespace xcrack
         for (const auto &entry : std::filesystem::directory_iterator(directory))
           {
             const std::string name = entry.path().filename().string();
-            if (entry.is_regular_file() && std::regex_match(name, temporary))
+            const bool        file = entry.is_regular_file();
+            if (file && std::regex_match(name, temporary))
               std::filesystem::remove(entry.path());
-            else if ((entry.is_regular_file() &&
-                      std::regex_match(name, files)) ||
+            else if ((file && (std::regex_match(name, result_files()) ||
+                               std::regex_match(name, figures) ||
+                               name == "run.json")) ||
                      (entry.is_directory() &&
                       std::regex_match(name, checkpoints)))
               std::filesystem::rename(entry.path(), earlier / name);
