@@ -12,8 +12,16 @@ exact closed-crack field on the boundary) and prints Markdown tables:
 2. against the penalty coefficient (pressure space `cells`, one mesh): the
    same, and the relative L2 error of the displacement.
 
+With --friction, the frictional closed crack instead
+(prm/benchmarks/closed_crack_friction_2d.prm, one mesh): K_II against the
+closed form -p sqrt(pi a) cos(beta) (sin(beta) - mu cos(beta))_+ over the
+friction coefficient mu (the lips stick from mu = tan(beta) = 0.577 on),
+and against the tangential penalty coefficient on both sides of the
+transition.
+
     contrib/build.sh release
     /usr/bin/python3 contrib/study_contact.py [--meshes 6] [--sweep-mesh 4]
+    /usr/bin/python3 contrib/study_contact.py --friction [--sweep-mesh 4]
 """
 import argparse
 import csv
@@ -27,18 +35,40 @@ xcrack = os.path.join(top, "build", "release", "xcrack")
 k_scale = math.sqrt(math.pi)  # p sqrt(pi a), p = a = 1
 
 
-def run(work, meshes, space, coefficient):
+beta = math.radians(30)
+
+
+def k_ii_exact(mu):
+    """K_II of the closed crack with Coulomb friction mu (p = a = 1)."""
+    return -k_scale * math.cos(beta) * max(
+        0., math.sin(beta) - mu * math.cos(beta))
+
+
+def run(work, meshes, space, coefficient, mu=None, tangential=1000):
     out = os.path.join(work, "out")
     prm = os.path.join(work, "run.prm")
+    scene = "closed_crack_2d" if mu is None else "closed_crack_friction_2d"
+    friction = "" if mu is None else f"""
+  set Friction coefficient = {mu}
+  subsection Penalty
+    set Tangential penalty coefficient = {tangential}
+  end"""
+    exact = "" if mu is None else f"""
+subsection Exact solution
+  set Friction coefficient = {mu}
+end
+subsection Fracture parameters
+  set Reference K = 0; {k_ii_exact(mu):.10f}
+end"""
     with open(prm, "w") as f:
-        f.write(f"""include {top}/prm/benchmarks/closed_crack_2d.prm
+        f.write(f"""include {top}/prm/benchmarks/{scene}.prm
 set Output directory = {out}
-subsection Contact
+subsection Contact{friction}
   subsection Penalty
     set Pressure space = {space}
     set Penalty coefficient = {coefficient}
   end
-end
+end{exact}
 subsection Mesh refinement
   set Number of meshes = {meshes}
 end
@@ -61,13 +91,46 @@ def row(r):
             f"{float(r['contact_pressure_max']):.3f}")
 
 
+def friction_row(r, mu):
+    k_ii = 0.5 * (float(r["K_II_1"]) + float(r["K_II_2"]))
+    k_i = max(abs(float(r["K_I_1"])), abs(float(r["K_I_2"])))
+    return (f"{k_ii_exact(mu) / k_scale:.4f} | {k_ii / k_scale:.4f} | "
+            f"{abs(k_ii - k_ii_exact(mu)) / k_scale:.1e} | "
+            f"{k_i / k_scale:.1e} | "
+            + (f"{float(r['contact_slipping']):.3f}" if mu > 0 else "-")
+            + f" | {r['newton_iterations']} | {float(r['L2_error']):.2e}")
+
+
+def friction_tables(work, mesh):
+    """K_II against the friction coefficient and the tangential penalty."""
+    header = ("K_II / p sqrt(pi a), exact | computed | error / p sqrt(pi a) | "
+              "abs(K_I) / p sqrt(pi a) | slipping | Newton steps | L2 error |")
+    print("| mu | " + header)
+    print("|---" * 8 + "|")
+    for mu in (0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.55, 0.6, 0.7, 1.0):
+        r = run(work, mesh + 1, "cells", 1000, mu)[-1]
+        print(f"| {mu} | {friction_row(r, mu)} |")
+    print()
+    print("| mu | tangential coefficient | " + header)
+    print("|---" * 9 + "|")
+    for mu in (0.3, 0.7):
+        for c in (1e1, 1e2, 1e3, 1e4, 1e5):
+            r = run(work, mesh + 1, "cells", 1000, mu, c)[-1]
+            print(f"| {mu} | {c:.0e} | {friction_row(r, mu)} |")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--meshes", type=int, default=6)
     parser.add_argument("--sweep-mesh", type=int, default=4,
                         help="the mesh (0-based) of the coefficient sweep")
+    parser.add_argument("--friction", action="store_true",
+                        help="the frictional closed crack's tables instead")
     args = parser.parse_args()
     work = tempfile.mkdtemp(prefix="xcrack-contact-")
+    if args.friction:
+        friction_tables(work, args.sweep_mesh)
+        return
     print("| space | DoFs | abs(K_I) / p sqrt(pi a) | K_II error | Newton "
           "steps | closed | contact pressure |")
     print("|---|---|---|---|---|---|---|")

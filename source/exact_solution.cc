@@ -4,6 +4,7 @@
 #include <xcrack/fracture/williams.h>
 #include <xcrack/input_error.h>
 
+#include <cmath>
 #include <complex>
 
 namespace xcrack
@@ -22,7 +23,14 @@ namespace xcrack
      * With @p closed lips (frictionless contact under a compressive
      * sigma'_yy) the crack transmits sigma'_yy: Z_I is replaced by the
      * uniform biaxial sigma'_yy it tends to at infinity, and only the
-     * shear slides the lips (K_I = 0, K_II = sigma'_xy sqrt(pi a)).
+     * shear slides the lips (K_I = 0, K_II = sigma'_xy sqrt(pi a)). With
+     * Coulomb friction mu on closed lips the whole crack slips if |sigma'_xy|
+     * > mu |sigma'_yy| and sticks otherwise (both stresses are uniform
+     * along it): Z_II carries the effective shear sigma'_xy - sign(
+     * sigma'_xy) mu |sigma'_yy| (0 when stuck), the rest of sigma'_xy is
+     * uniform, and K_II = (|sigma'_xy| - mu |sigma'_yy|)_+ sign(sigma'_xy)
+     * sqrt(pi a) (Dolbow, Moes and Belytschko 2001, section 5.2; Liu and
+     * Borja 2008).
      */
     template <int dim>
     class GriffithSolution : public Function<dim>
@@ -34,7 +42,8 @@ namespace xcrack
                        const std::vector<double> &remote,
                        const double               mu,
                        const double               kappa,
-                       const bool                 closed)
+                       const bool                 closed,
+                       const double               friction)
         : Function<dim>(dim)
         , centre(centre)
         , t(direction)
@@ -55,6 +64,13 @@ namespace xcrack
         s_nn   = project(n, n);
         s_tn   = project(t, n);
         s_open = (closed ? 0. : s_nn);
+        if (closed)
+          {
+            const double excess = std::abs(s_tn) - friction * std::abs(s_nn);
+            s_slide = (excess > 0 ? std::copysign(excess, s_tn) : 0.);
+          }
+        else
+          s_slide = s_tn;
       }
 
       double
@@ -68,9 +84,12 @@ namespace xcrack
         const C            Z = z / root, Zbar = root;
         // Local displacements (u'_x, u'_y) times 2 mu.
         double ux = s_open * (0.5 * (kappa - 1) * Zbar.real() - y * Z.imag()) +
-                    s_tn * (0.5 * (kappa + 1) * Zbar.imag() + y * Z.real());
+                    s_slide * (0.5 * (kappa + 1) * Zbar.imag() + y * Z.real());
         double uy = s_open * (0.5 * (kappa + 1) * Zbar.imag() - y * Z.real()) +
-                    s_tn * (-0.5 * (kappa - 1) * Zbar.real() - y * Z.imag());
+                    s_slide * (-0.5 * (kappa - 1) * Zbar.real() - y * Z.imag());
+        // The shear that friction holds: uniform (2 mu eps'_xy).
+        ux += (s_tn - s_slide) * y;
+        uy += (s_tn - s_slide) * x;
         // Closed: the uniform biaxial sigma'_yy instead of Z_I's.
         if (closed)
           {
@@ -102,16 +121,18 @@ namespace xcrack
         // Local gradient G[i][j] = d u'_i / d x'_j, times 2 mu.
         Tensor<2, 2> G;
         G[0][0] = s_open * (0.5 * (k - 1) * Z.real() - y * dZ.imag()) +
-                  s_tn * (0.5 * (k + 1) * Z.imag() + y * dZ.real()) +
+                  s_slide * (0.5 * (k + 1) * Z.imag() + y * dZ.real()) +
                   0.25 * (k + 1) * s;
         G[0][1] =
           s_open * (-0.5 * (k - 1) * Z.imag() - Z.imag() - y * dZ.real()) +
-          s_tn * (0.5 * (k + 1) * Z.real() + Z.real() - y * dZ.imag());
+          s_slide * (0.5 * (k + 1) * Z.real() + Z.real() - y * dZ.imag()) +
+          (s_tn - s_slide);
         G[1][0] = s_open * (0.5 * (k + 1) * Z.imag() - y * dZ.real()) +
-                  s_tn * (-0.5 * (k - 1) * Z.real() - y * dZ.imag());
+                  s_slide * (-0.5 * (k - 1) * Z.real() - y * dZ.imag()) +
+                  (s_tn - s_slide);
         G[1][1] =
           s_open * (0.5 * (k + 1) * Z.real() - Z.real() + y * dZ.imag()) +
-          s_tn * (0.5 * (k - 1) * Z.imag() - Z.imag() - y * dZ.real()) +
+          s_slide * (0.5 * (k - 1) * Z.imag() - Z.imag() - y * dZ.real()) +
           0.25 * (k - 3) * s;
         if (closed)
           {
@@ -136,6 +157,9 @@ namespace xcrack
       double       s_tt = 0, s_nn = 0, s_tn = 0;
       /// sigma'_yy where Z_I carries it (open lips), else 0.
       double s_open = 0;
+      /// sigma'_xy where Z_II carries it: all of it on open lips, the part
+      /// friction does not hold on closed ones.
+      double s_slide = 0;
     };
   } // namespace
 
@@ -171,6 +195,13 @@ namespace xcrack
                         "frictionless lips in contact under a compressive "
                         "normal stress, which the crack transmits (K_I = 0; "
                         "the shear slides them).");
+      prm.declare_entry("Friction coefficient",
+                        "0",
+                        Patterns::Double(0),
+                        "griffith, Lips = closed: Coulomb's mu on the lips; "
+                        "the crack slips under the shear mu times the normal "
+                        "stress does not hold (K_II of that excess), or "
+                        "sticks (K_II = 0).");
       prm.declare_entry("Displacement",
                         "",
                         Patterns::Anything(),
@@ -217,6 +248,7 @@ namespace xcrack
     const double      half_length  = prm.get_double("Half-length");
     const std::string remote       = prm.get("Remote stress");
     const bool        closed       = (prm.get("Lips") == "closed");
+    const double      friction     = prm.get_double("Friction coefficient");
     prm.leave_subsection();
 
     if (type == "griffith")
@@ -243,7 +275,8 @@ namespace xcrack
           sigma,
           material.mu(),
           material.kappa(dim),
-          closed);
+          closed,
+          friction);
       }
 
     if (type == "parsed")

@@ -33,6 +33,13 @@ namespace xcrack
                         "much stiffer than a cell's worth of material the "
                         "springs between closed lips are (> 0). The lips "
                         "interpenetrate by about p h / (coefficient E).");
+      prm.declare_entry("Tangential penalty coefficient",
+                        "1000",
+                        Patterns::Double(),
+                        "With friction: kappa_T = coefficient E / h, the "
+                        "stiffness of the springs that hold sticking lips "
+                        "(> 0). Sticking lips slip by about t h / "
+                        "(coefficient E), t their tangential traction.");
       prm.leave_subsection();
     }
 
@@ -43,11 +50,16 @@ namespace xcrack
     Penalty<dim>::parse_parameters(ParameterHandler &prm)
     {
       const Plugins::ScopedSubsection scope(prm, "Penalty");
-      coefficient = prm.get_double("Penalty coefficient");
-      per_cell    = (prm.get("Pressure space") == "cells");
+      coefficient            = prm.get_double("Penalty coefficient");
+      tangential_coefficient = prm.get_double("Tangential penalty coefficient");
+      per_cell               = (prm.get("Pressure space") == "cells");
       check_input(coefficient > 0,
                   "Contact/Penalty/Penalty coefficient = " +
                     prm.get("Penalty coefficient") + ": must be positive.");
+      check_input(tangential_coefficient > 0,
+                  "Contact/Penalty/Tangential penalty coefficient = " +
+                    prm.get("Tangential penalty coefficient") +
+                    ": must be positive.");
     }
 
 
@@ -61,14 +73,15 @@ namespace xcrack
       // A solve starts open everywhere (its first iterate is zero).
       if (first)
         {
-          closed.clear();
+          statuses.clear();
           pressures.clear();
-          normals.clear();
+          tractions.clear();
         }
       n_changed = 0;
       lip_points.clear();
       lip_measure    = 0;
       closed_measure = 0;
+      slip_measure   = 0;
       pressure_min   = std::numeric_limits<double>::max();
       pressure_max   = 0;
     }
@@ -95,74 +108,162 @@ namespace xcrack
       // The pressure's space: one value per lip point, or one per cell (the
       // mean gap of the cell's lips).
       const unsigned int n_groups = (per_cell ? 1 : n_points);
-      std::vector<char> &status   = closed[id];
+      std::vector<char> &status   = statuses[id];
       // The statuses this iterate was solved with (none before a solve's
       // first step).
       const bool known = (status.size() == n_groups);
       status.resize(n_groups);
       std::vector<double>         &p = pressures[id];
-      std::vector<Tensor<1, dim>> &n = normals[id];
+      std::vector<Tensor<1, dim>> &t = tractions[id];
       p.resize(n_points);
-      n.resize(n_points);
-      std::vector<double> mean_jump(n_dofs);
+      t.resize(n_points);
+      const bool                  friction = (this->friction > 0);
+      std::vector<double>         mean_gap(n_dofs);
+      std::vector<Tensor<1, dim>> mean_slip(friction ? n_dofs : 0);
+      std::vector<Tensor<1, dim>> n(n_points);
       for (unsigned int group = 0; group < n_groups; ++group)
         {
           const unsigned int first = (per_cell ? 0 : group);
           const unsigned int last  = (per_cell ? n_points : group + 1);
-          // The group's length (area) and the mean of n . [[phi_i]].
+          // The group's length (area), and the means over it of n . [[phi_i]]
+          // and, with friction, of P_T [[phi_i]].
           double length = 0;
-          std::fill(mean_jump.begin(), mean_jump.end(), 0.);
+          std::fill(mean_gap.begin(), mean_gap.end(), 0.);
+          std::fill(mean_slip.begin(), mean_slip.end(), Tensor<1, dim>());
           for (unsigned int q = first; q < last; ++q)
             {
               const double ds = lip_values->normal_ds(q).norm();
               n[q]            = lip_values->normal_ds(q) / ds;
               length += ds;
               for (unsigned int i = 0; i < n_dofs; ++i)
-                mean_jump[i] +=
-                  n[q][lip_values->component(i)] * lip_values->jump(i, q) * ds;
+                {
+                  const double       jump_ds = lip_values->jump(i, q) * ds;
+                  const unsigned int c       = lip_values->component(i);
+                  mean_gap[i] += n[q][c] * jump_ds;
+                  if (friction && jump_ds != 0)
+                    {
+                      mean_slip[i] -= (n[q][c] * jump_ds) * n[q];
+                      mean_slip[i][c] += jump_ds;
+                    }
+                }
             }
           if (length == 0)
             continue;
-          double gap = 0;
+          // Zero at the first step: the lips start closed and sticking, so
+          // that a piece the crack cuts off rests on them from the start
+          // (open, it would float and the first system be singular).
+          double         gap = 0;
+          Tensor<1, dim> slip;
           for (unsigned int i = 0; i < n_dofs; ++i)
             {
-              mean_jump[i] /= length;
-              // Zero at the first step: the lips start closed, so that a
-              // piece the crack cuts off rests on them from the start
-              // (open, it would float and the first system be singular).
+              mean_gap[i] /= length;
+              if (friction)
+                mean_slip[i] /= length;
               if (input.iterate)
-                gap += (*input.iterate)[i] * mean_jump[i];
+                {
+                  gap += (*input.iterate)[i] * mean_gap[i];
+                  if (friction)
+                    slip += (*input.iterate)[i] * mean_slip[i];
+                }
             }
-          const bool is_closed = (gap <= 0);
-          if (known && is_closed != bool(status[group]))
+          const double   pressure = (gap <= 0 ? -kappa * gap : 0.);
+          Tensor<1, dim> tangential;
+          bool           sliding = false;
+          if (gap <= 0)
+            {
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                if (mean_gap[i] != 0)
+                  for (unsigned int j = 0; j < n_dofs; ++j)
+                    matrix(i, j) += kappa * length * mean_gap[i] * mean_gap[j];
+              if (friction)
+                tangential =
+                  add_friction(slip,
+                               mean_slip,
+                               mean_gap,
+                               pressure,
+                               kappa,
+                               tangential_coefficient * kappa / coefficient,
+                               length,
+                               matrix,
+                               sliding);
+            }
+          const char now = (gap > 0 ? opened : sliding ? slipping : sticking);
+          if (known && now != status[group])
             {
               if (n_changed == 0)
                 first_changed = lip_values->point(first);
               ++n_changed;
             }
-          status[group] = is_closed;
+          status[group] = now;
           for (unsigned int q = first; q < last; ++q)
-            p[q] = (is_closed ? -kappa * gap : 0.);
-          if (!is_closed)
-            continue;
-          for (unsigned int i = 0; i < n_dofs; ++i)
-            if (mean_jump[i] != 0)
-              for (unsigned int j = 0; j < n_dofs; ++j)
-                matrix(i, j) += kappa * length * mean_jump[i] * mean_jump[j];
+            {
+              p[q] = pressure;
+              t[q] = pressure * n[q] + tangential;
+            }
         }
       for (unsigned int q = 0; q < n_points; ++q)
         {
-          const double ds = lip_values->normal_ds(q).norm();
+          const double ds  = lip_values->normal_ds(q).norm();
+          const char   now = status[per_cell ? 0 : q];
           lip_measure += ds;
-          lip_points.push_back(
-            {lip_values->point(q), ds, bool(status[per_cell ? 0 : q])});
-          if (status[per_cell ? 0 : q])
+          lip_points.push_back({lip_values->point(q), ds, now != opened});
+          if (now != opened)
             {
               closed_measure += ds;
+              slip_measure += (now == slipping ? ds : 0.);
               pressure_min = std::min(pressure_min, p[q]);
               pressure_max = std::max(pressure_max, p[q]);
             }
         }
+    }
+
+
+
+    template <int dim>
+    Tensor<1, dim>
+    Penalty<dim>::add_friction(const Tensor<1, dim>              &slip,
+                               const std::vector<Tensor<1, dim>> &mean_slip,
+                               const std::vector<double>         &mean_gap,
+                               const double                       pressure,
+                               const double                       kappa,
+                               const double                       kappa_t,
+                               const double                       length,
+                               FullMatrix<double>                &matrix,
+                               bool                              &sliding) const
+    {
+      const unsigned int   n_dofs = matrix.m();
+      const double         mu     = this->friction;
+      const Tensor<1, dim> trial  = -kappa_t * slip;
+      sliding                     = (trial.norm() > mu * pressure);
+      if (!sliding)
+        {
+          // Sticking springs: the force kappa_T s . P_T [[phi_i]].
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            if (mean_slip[i].norm_square() != 0)
+              for (unsigned int j = 0; j < n_dofs; ++j)
+                matrix(i, j) +=
+                  kappa_t * length * (mean_slip[i] * mean_slip[j]);
+          return trial;
+        }
+      // Slipping: the force F_i = mu p (s/|s|) . P_T [[phi_i]] ds with p =
+      // -kappa g; its derivative in u_j: mu kappa [-(s^ . P_T [[phi_i]])
+      // (n . [[phi_j]]) + (p / kappa |s|) P_T [[phi_i]] . (I - s^ s^)
+      // P_T [[phi_j]]] (the last term vanishes in 2D).
+      const double         s      = slip.norm();
+      const Tensor<1, dim> along  = slip / s;
+      const double         factor = mu * kappa * length;
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        {
+          if (mean_slip[i].norm_square() == 0)
+            continue;
+          const double along_i = along * mean_slip[i];
+          for (unsigned int j = 0; j < n_dofs; ++j)
+            matrix(i, j) += factor * (-along_i * mean_gap[j] +
+                                      pressure / (kappa * s) *
+                                        (mean_slip[i] * mean_slip[j] -
+                                         along_i * (along * mean_slip[j])));
+        }
+      return -mu * pressure * along;
     }
 
 
@@ -189,9 +290,16 @@ namespace xcrack
       const double   low    = Utilities::MPI::min(pressure_min, comm);
       const double   high   = Utilities::MPI::max(pressure_max, comm);
       // The largest interpenetration is that of the largest pressure.
-      return {{"contact_closed", lips > 0 ? closed / lips : 0.},
-              {"contact_pressure_min", closed > 0 ? low : 0.},
-              {"contact_pressure_max", high}};
+      std::map<std::string, double> values{
+        {"contact_closed", lips > 0 ? closed / lips : 0.},
+        {"contact_pressure_min", closed > 0 ? low : 0.},
+        {"contact_pressure_max", high}};
+      if (this->friction > 0)
+        {
+          const double slipped       = Utilities::MPI::sum(slip_measure, comm);
+          values["contact_slipping"] = (closed > 0 ? slipped / closed : 0.);
+        }
+      return values;
     }
 
 
@@ -220,10 +328,10 @@ namespace xcrack
     Tensor<1, dim>
     Penalty<dim>::lip_traction(const CellId &cell, const unsigned int q) const
     {
-      const auto it = pressures.find(cell);
-      if (it == pressures.end() || q >= it->second.size())
+      const auto it = tractions.find(cell);
+      if (it == tractions.end() || q >= it->second.size())
         return Tensor<1, dim>();
-      return it->second[q] * normals.at(cell)[q];
+      return it->second[q];
     }
 
     XCRACK_REGISTER_PLUGIN(Interface,

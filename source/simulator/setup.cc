@@ -299,7 +299,10 @@ namespace xcrack
                   " cannot solve the " +
                   LinearSolver::to_string(matrix_property()) +
                   " systems of this scene (its contact formulation): use "
-                  "Type = direct.");
+                  "Type = direct" +
+                  (matrix_property() == LinearSolver::MatrixProperty::general ?
+                     " or gmres amg." :
+                     "."));
   }
 
 

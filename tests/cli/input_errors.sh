@@ -96,6 +96,16 @@ expect_error minimum_both_kinds "Minimum loads/Neumann: boundary id 0 has a full
 # Contact: a coefficient that is not positive; lips that do not exist.
 expect_error contact_penalty "Contact/Penalty/Penalty coefficient = -1: must be positive" \
   < <(growth; printf 'subsection Contact\n  set Formulation = penalty\n  subsection Penalty\n    set Penalty coefficient = -1\n  end\nend\n')
+# Friction: a negative coefficient; friction on lips that do not touch; a
+# tangential penalty that is not positive; a solver for symmetric systems.
+expect_error friction_negative "Contact/Friction coefficient = -0.1: must be zero \\(frictionless\\) or positive" \
+  < <(growth; printf 'subsection Contact\n  set Formulation = penalty\n  set Friction coefficient = -0.1\nend\n')
+expect_error friction_without_contact "Contact/Friction coefficient = 0.3 with Contact/Formulation = none" \
+  < <(growth; printf 'subsection Contact\n  set Friction coefficient = 0.3\nend\n')
+expect_error friction_tangential "Contact/Penalty/Tangential penalty coefficient = 0: must be positive" \
+  < <(growth; printf 'subsection Contact\n  set Formulation = penalty\n  set Friction coefficient = 0.3\n  subsection Penalty\n    set Tangential penalty coefficient = 0\n  end\nend\n')
+expect_error friction_cg "Linear solver/Type = cg amg cannot solve the unsymmetric systems of this scene .*use Type = direct or gmres amg" \
+  < <(growth; printf 'subsection Contact\n  set Formulation = penalty\n  set Friction coefficient = 0.3\nend\nsubsection Linear solver\n  set Type = cg amg\nend\n')
 expect_error contact_no_crack "Contact/Formulation = penalty but there is no crack" \
   < <(cat valid.prm; printf 'subsection Contact\n  set Formulation = penalty\nend\n')
 expect_error growth_no_crack "Propagation/Number of steps > 0 but there is no crack" \

@@ -35,7 +35,14 @@ namespace xcrack
    * [[u]] the jump of the displacement across the crack (the lips coincide
    * before the load: the initial gap is zero); the lips must not
    * interpenetrate, g >= 0, and press on each other only where they touch:
-   * p >= 0, p g = 0.
+   * p >= 0, p g = 0. With Coulomb friction (`Friction coefficient` mu > 0)
+   * closed lips also resist their slip s = P_T [[u]] (P_T the projection on
+   * the crack's tangent plane): they stick while the tangential traction
+   * |t_T| < mu p, and slip against it with |t_T| = mu p. Each load state is
+   * reached from the unloaded body along a proportional path, in one
+   * increment: the slip is measured from the lips' position before the load
+   * (exact for proportional monotonic loading, as in the closed-form
+   * benchmarks; a load history within the cycle is not followed).
    */
   namespace Contact
   {
@@ -64,7 +71,8 @@ namespace xcrack
       /**
        * What the last assembly found, over all ranks (collective), for
        * statistics.csv: `contact_closed`, the fraction of the lips' length
-       * (area) that is closed, and `contact_pressure_min`,
+       * (area) that is closed, with friction `contact_slipping`, the
+       * fraction of the closed lips that slip, and `contact_pressure_min`,
        * `contact_pressure_max`, the smallest and largest contact pressure
        * where they are (a uniform pressure that these show spread out
        * oscillates: the pressure space is not stable there).
@@ -77,6 +85,16 @@ namespace xcrack
       {
         return false;
       }
+
+      /// Friction's tangent at a slipping point is not symmetric.
+      bool
+      is_symmetric() const override
+      {
+        return friction == 0;
+      }
+
+      /// Coulomb's mu on the lips (0: frictionless); set by create().
+      double friction = 0;
     };
 
 

@@ -33,6 +33,16 @@ namespace xcrack
      * "Crack lips that touch"). Large coefficients approach exact contact
      * and condition the system worse (the Newton loop also needs more
      * steps when many points change status at once).
+     *
+     * With friction, closed lips are held in their tangent plane by springs
+     * of stiffness kappa_T = `Tangential penalty coefficient` E / h: the
+     * trial traction t = -kappa_T s. Where |t| <= mu p they stick (the
+     * springs hold them: a slip of order mu p h / (coefficient E) remains);
+     * elsewhere they slip, t = -mu p s / |s|, whose tangent couples the
+     * tangential force to the gap and is not symmetric. Both forces are
+     * homogeneous of degree one in u, so the Newton step's right-hand side
+     * stays zero; in 2D the slipping force is linear once its direction is
+     * known, and the solve is exact once the statuses settle.
      */
     template <int dim>
     class Penalty : public Interface<dim>, public SimulatorAccess<dim>
@@ -66,23 +76,52 @@ namespace xcrack
       closed_fraction(const Point<dim> &x, const double radius) const override;
 
     private:
+      /**
+       * Add the tangent of friction at one closed group to @p matrix and
+       * return the tangential traction on the lsn > 0 lip: @p slip the
+       * group's mean slip, @p mean_slip[i] that of shape function i,
+       * @p mean_gap[i] its mean n . [[phi_i]], @p pressure the group's
+       * contact pressure, @p kappa_t the tangential springs' stiffness,
+       * @p length the group's length (area). @p sliding says whether the
+       * point slips.
+       */
+      Tensor<1, dim>
+      add_friction(const Tensor<1, dim>              &slip,
+                   const std::vector<Tensor<1, dim>> &mean_slip,
+                   const std::vector<double>         &mean_gap,
+                   const double                       pressure,
+                   const double                       kappa,
+                   const double                       kappa_t,
+                   const double                       length,
+                   FullMatrix<double>                &matrix,
+                   bool                              &sliding) const;
+
       double coefficient = 1e3;
+      /// kappa_T / (E / h) of friction's sticking springs.
+      double tangential_coefficient = 1e3;
       /// Pressure space = cells: one pressure per cell, from its mean gap.
       bool per_cell = true;
 
-      /// Per cell with lips, at each lip point: whether the last assembly
-      /// found it closed, its contact pressure, and the normal (for the
-      /// traction p n).
-      std::map<CellId, std::vector<char>>           closed;
+      /// A lip point's (or a cell's) status.
+      enum Status : char
+      {
+        opened,
+        sticking,
+        slipping
+      };
+      /// Per cell with lips: the status of each pressure group (a point or
+      /// the cell) as of the last assembly; at each lip point, the contact
+      /// pressure and the whole traction on the lsn > 0 lip (p n + t_T).
+      std::map<CellId, std::vector<char>>           statuses;
       std::map<CellId, std::vector<double>>         pressures;
-      std::map<CellId, std::vector<Tensor<1, dim>>> normals;
+      std::map<CellId, std::vector<Tensor<1, dim>>> tractions;
       /// Points whose status (open or closed) the last assembly changed,
       /// and where the first of them is.
       unsigned int n_changed = 0;
       Point<dim>   first_changed;
       /// Of the last assembly, on this rank: the lips' length (area), that
       /// of the closed ones, the smallest and largest pressure where closed.
-      double lip_measure = 0, closed_measure = 0;
+      double lip_measure = 0, closed_measure = 0, slip_measure = 0;
       double pressure_min = 0, pressure_max = 0;
       /// Every lip point of the last assembly on this rank: where it is,
       /// its share of the lips, whether it is closed.
