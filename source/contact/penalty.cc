@@ -76,6 +76,7 @@ namespace xcrack
           statuses.clear();
           pressures.clear();
           tractions.clear();
+          cell_states.clear();
         }
       n_changed = 0;
       lip_points.clear();
@@ -121,6 +122,9 @@ namespace xcrack
       std::vector<double>         mean_gap(n_dofs);
       std::vector<Tensor<1, dim>> mean_slip(friction ? n_dofs : 0);
       std::vector<Tensor<1, dim>> n(n_points);
+      // The cell's means, for the output.
+      typename Interface<dim>::LipState &state = cell_states[id];
+      state                                    = {};
       for (unsigned int group = 0; group < n_groups; ++group)
         {
           const unsigned int first = (per_cell ? 0 : group);
@@ -199,12 +203,19 @@ namespace xcrack
             {
               p[q] = pressure;
               t[q] = pressure * n[q] + tangential;
+              state.gap += gap * lip_values->normal_ds(q).norm();
             }
         }
+      double cell_measure = 0;
       for (unsigned int q = 0; q < n_points; ++q)
         {
           const double ds  = lip_values->normal_ds(q).norm();
           const char   now = status[per_cell ? 0 : q];
+          cell_measure += ds;
+          state.pressure += p[q] * ds;
+          state.traction += t[q] * ds;
+          state.closed += (now != opened ? ds : 0.);
+          state.slipping += (now == slipping ? ds : 0.);
           lip_measure += ds;
           lip_points.push_back({lip_values->point(q), ds, now != opened});
           if (now != opened)
@@ -214,6 +225,14 @@ namespace xcrack
               pressure_min = std::min(pressure_min, p[q]);
               pressure_max = std::max(pressure_max, p[q]);
             }
+        }
+      if (cell_measure > 0)
+        {
+          state.pressure /= cell_measure;
+          state.gap /= cell_measure;
+          state.traction /= cell_measure;
+          state.closed /= cell_measure;
+          state.slipping /= cell_measure;
         }
     }
 
@@ -320,6 +339,17 @@ namespace xcrack
       near                = Utilities::MPI::sum(near, comm);
       closed              = Utilities::MPI::sum(closed, comm);
       return (near > 0 ? closed / near : 0.);
+    }
+
+
+
+    template <int dim>
+    typename Interface<dim>::LipState
+    Penalty<dim>::lip_state(const CellId &cell) const
+    {
+      const auto it = cell_states.find(cell);
+      return (it == cell_states.end() ? typename Interface<dim>::LipState() :
+                                        it->second);
     }
 
 

@@ -578,18 +578,58 @@ namespace xcrack
 
 
   template <int dim>
-  void
-  CrackSurface<dim>::write_vtu(
-    const std::string                   &file_name,
-    const DoFHandler<dim>               &dof_handler,
-    const TrilinosWrappers::MPI::Vector &solution) const
+  Tensor<1, dim>
+  CrackSurface<dim>::real_normal(const Piece &piece)
   {
-    // Flatten the local pieces (corner count, then per corner x y z and the
-    // opening) and collect them on rank 0.
+    // The normal of the corners' segment (2D: turned by +90 degrees) or
+    // polygon (3D: Newell's), in real and in reference coordinates. The
+    // mapping keeps orientation, so the real one points to the lsn > 0 side
+    // exactly when the reference one agrees with lsn's reference gradient.
+    const auto geometric = [](const std::vector<Point<dim>> &corners) {
+      Tensor<1, dim> n;
+      if (corners.size() < dim)
+        return n;
+      if constexpr (dim == 2)
+        {
+          const Tensor<1, dim> t = corners[1] - corners[0];
+          n[0]                   = -t[1];
+          n[1]                   = t[0];
+        }
+      else
+        for (unsigned int k = 0; k < corners.size(); ++k)
+          n += cross_product_3d(corners[k] - corners[0],
+                                corners[(k + 1) % corners.size()] - corners[0]);
+      return n;
+    };
+    Tensor<1, dim> n         = geometric(piece.real);
+    Tensor<1, dim> reference = geometric(piece.reference), gradient;
+    for (const Tensor<1, dim> &g : piece.reference_normal)
+      gradient += g;
+    if (n.norm() == 0)
+      return n;
+    return (reference * gradient < 0 ? -1. : 1.) * n / n.norm();
+  }
+
+
+
+  template <int dim>
+  void
+  CrackSurface<dim>::write_vtu(const std::string                   &file_name,
+                               const DoFHandler<dim>               &dof_handler,
+                               const TrilinosWrappers::MPI::Vector &solution,
+                               const std::vector<LipField> &fields) const
+  {
+    // Flatten the local pieces (corner count, then per corner x y z, the
+    // opening and the normal, then the fields' values) and collect them on
+    // rank 0.
+    unsigned int n_field_values = 0;
+    for (const LipField &field : fields)
+      n_field_values += field.n_components;
     const auto          jumps = openings(dof_handler, solution);
     std::vector<double> local;
     for (unsigned int i = 0; i < pieces.size(); ++i)
       {
+        const Tensor<1, dim> n = real_normal(pieces[i]);
         local.push_back(pieces[i].real.size());
         for (unsigned int k = 0; k < pieces[i].real.size(); ++k)
           {
@@ -597,6 +637,18 @@ namespace xcrack
               local.push_back(d < dim ? pieces[i].real[k][d] : 0.);
             for (unsigned int d = 0; d < 3; ++d)
               local.push_back(d < dim ? jumps[i][k][d] : 0.);
+            for (unsigned int d = 0; d < 3; ++d)
+              local.push_back(d < dim ? n[d] : 0.);
+          }
+        const CellId id =
+          typename Triangulation<dim>::cell_iterator(
+            &dof_handler.get_triangulation(), pieces[i].level, pieces[i].index)
+            ->id();
+        for (const LipField &field : fields)
+          {
+            std::vector<double> values = field.value(id);
+            values.resize(field.n_components, 0.);
+            local.insert(local.end(), values.begin(), values.end());
           }
       }
     const auto all = Utilities::MPI::gather(communicator, local, 0);
@@ -606,22 +658,34 @@ namespace xcrack
     // Points: the lip corners (with their opening), then the front points
     // (with their abscissa). Cells: lip pieces, then one poly-line per front
     // (a vertex per tip in 2D).
-    std::vector<std::array<double, 3>>     points, opening;
-    std::vector<double>                    abscissa;
+    std::vector<std::array<double, 3>>     points, opening, slip;
+    std::vector<double>                    abscissa, gap;
     std::vector<std::vector<unsigned int>> cells;
     std::vector<unsigned int>              types, kinds;
+    // Per cell, the fields' values (zeros on the fronts).
+    std::vector<std::vector<double>> field_values;
     for (const auto &rank : all)
       for (unsigned int i = 0; i < rank.size();)
         {
           const unsigned int        n = rank[i++];
           std::vector<unsigned int> cell;
-          for (unsigned int k = 0; k < n; ++k, i += 6)
+          for (unsigned int k = 0; k < n; ++k, i += 9)
             {
               cell.push_back(points.size());
               points.push_back({{rank[i], rank[i + 1], rank[i + 2]}});
               opening.push_back({{rank[i + 3], rank[i + 4], rank[i + 5]}});
+              double g = 0;
+              for (unsigned int d = 0; d < 3; ++d)
+                g += rank[i + 3 + d] * rank[i + 6 + d];
+              gap.push_back(g);
+              slip.push_back({{rank[i + 3] - g * rank[i + 6],
+                               rank[i + 4] - g * rank[i + 7],
+                               rank[i + 5] - g * rank[i + 8]}});
               abscissa.push_back(0);
             }
+          field_values.emplace_back(rank.begin() + i,
+                                    rank.begin() + i + n_field_values);
+          i += n_field_values;
           cells.push_back(cell);
           types.push_back(dim == 2 ? 3 /*line*/ : 7 /*polygon*/);
           kinds.push_back(0);
@@ -636,8 +700,11 @@ namespace xcrack
                                p.position[1],
                                dim == 3 ? p.position[dim - 1] : 0.}});
             opening.push_back({{0., 0., 0.}});
+            slip.push_back({{0., 0., 0.}});
+            gap.push_back(0);
             abscissa.push_back(p.s);
           }
+        field_values.emplace_back(n_field_values, 0.);
         cells.push_back(cell);
         types.push_back(front.size() == 1 ? 1 /*vertex*/ : 4 /*poly-line*/);
         kinds.push_back(1);
@@ -679,6 +746,15 @@ namespace xcrack
       for (const auto &o : opening)
         out << o[0] << ' ' << o[1] << ' ' << o[2] << '\n';
       out << "</DataArray>\n"
+          << "<DataArray type=\"Float64\" Name=\"gap\" format=\"ascii\">\n";
+      for (const double g : gap)
+        out << g << '\n';
+      out << "</DataArray>\n"
+          << "<DataArray type=\"Float64\" Name=\"slip\" "
+             "NumberOfComponents=\"3\" format=\"ascii\">\n";
+      for (const auto &o : slip)
+        out << o[0] << ' ' << o[1] << ' ' << o[2] << '\n';
+      out << "</DataArray>\n"
           << "<DataArray type=\"Float64\" Name=\"front_abscissa\" "
              "format=\"ascii\">\n";
       for (const double s : abscissa)
@@ -688,7 +764,26 @@ namespace xcrack
           << "<DataArray type=\"UInt8\" Name=\"kind\" format=\"ascii\">\n";
       for (const unsigned int k : kinds)
         out << k << '\n';
-      out << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n"
+      out << "</DataArray>\n";
+      unsigned int first = 0;
+      for (const LipField &field : fields)
+        {
+          out << "<DataArray type=\"Float64\" Name=\"" << field.name << "\" "
+              << (field.n_components > 1 ?
+                    "NumberOfComponents=\"" +
+                      std::to_string(field.n_components) + "\" " :
+                    "")
+              << "format=\"ascii\">\n";
+          for (const std::vector<double> &values : field_values)
+            {
+              for (unsigned int c = 0; c < field.n_components; ++c)
+                out << values[first + c]
+                    << (c + 1 < field.n_components ? ' ' : '\n');
+            }
+          out << "</DataArray>\n";
+          first += field.n_components;
+        }
+      out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n"
           << "</VTKFile>\n";
     });
   }

@@ -62,6 +62,35 @@ namespace xcrack
     // crack-<key>.vtu for one crack, crack<i>-<key>.vtu for several, and
     // crack.pvd, the series of the first crack (ParaView shows it grow).
     const std::string dir = run_parameters.output_directory + "/";
+    // With contact the lips show what is shut: pressure, the gap the
+    // formulation holds (the corners' gap varies about it), traction (with
+    // friction's), and the closed and slipping fractions of each cell.
+    std::vector<typename CrackSurface<dim>::LipField> lip_fields;
+    if (contact)
+      {
+        const auto state = [this](const CellId &cell) {
+          return contact->lip_state(cell);
+        };
+        lip_fields.push_back({"contact_pressure", 1, [state](const CellId &c) {
+                                return std::vector<double>{state(c).pressure};
+                              }});
+        lip_fields.push_back({"contact_gap", 1, [state](const CellId &c) {
+                                return std::vector<double>{state(c).gap};
+                              }});
+        lip_fields.push_back(
+          {"contact_traction", 3, [state](const CellId &c) {
+             const Tensor<1, dim> t = state(c).traction;
+             return std::vector<double>{t[0], t[1], dim == 3 ? t[dim - 1] : 0.};
+           }});
+        lip_fields.push_back({"contact_closed", 1, [state](const CellId &c) {
+                                return std::vector<double>{state(c).closed};
+                              }});
+        if (contact->friction > 0)
+          lip_fields.push_back(
+            {"contact_slipping", 1, [state](const CellId &c) {
+               return std::vector<double>{state(c).slipping};
+             }});
+      }
     if (enrichment)
       for (unsigned int c = 0; c < crack_surfaces.size(); ++c)
         {
@@ -69,7 +98,10 @@ namespace xcrack
             "crack" +
             (cracks.size() > 1 ? std::to_string(c + 1) : std::string()) + "-" +
             key + ".vtu";
-          crack_surfaces[c].write_vtu(dir + name, dof_handler, solution);
+          crack_surfaces[c].write_vtu(dir + name,
+                                      dof_handler,
+                                      solution,
+                                      lip_fields);
           run_record->add_file(name);
           if (c == 0 && Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
             {

@@ -60,6 +60,24 @@ namespace xcrack
       virtual Tensor<1, dim>
       lip_traction(const CellId &cell, const unsigned int q) const = 0;
 
+      /// What the last assembly found on the lips of one cell, as means
+      /// over them weighted by their length (area).
+      struct LipState
+      {
+        /// The contact pressure, and the gap the formulation holds (the
+        /// mean of the cell's, or of its points').
+        double pressure = 0, gap = 0;
+        /// The traction on the lsn > 0 lip (p n plus friction's).
+        Tensor<1, dim> traction;
+        /// The fractions of the cell's lips that are closed, and slip.
+        double closed = 0, slipping = 0;
+      };
+
+      /// The state of the lips of the locally owned @p cell (zeros where it
+      /// has none), for the crack's VTU.
+      virtual LipState
+      lip_state(const CellId &cell) const = 0;
+
       /**
        * The fraction of the lips within @p radius of @p x (a front point)
        * that the last assembly found closed, over all ranks (collective; 0

@@ -72,6 +72,9 @@ namespace xcrack
       std::map<std::string, double>
       statistics() const override;
 
+      typename Interface<dim>::LipState
+      lip_state(const CellId &cell) const override;
+
       double
       closed_fraction(const Point<dim> &x, const double radius) const override;
 
@@ -115,6 +118,8 @@ namespace xcrack
       std::map<CellId, std::vector<char>>           statuses;
       std::map<CellId, std::vector<double>>         pressures;
       std::map<CellId, std::vector<Tensor<1, dim>>> tractions;
+      /// Per cell with lips, the means of the last assembly.
+      std::map<CellId, typename Interface<dim>::LipState> cell_states;
       /// Points whose status (open or closed) the last assembly changed,
       /// and where the first of them is.
       unsigned int n_changed = 0;

@@ -4,11 +4,13 @@
 #include <deal.II/base/point.h>
 
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/grid/cell_id.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <xcrack/crack/crack_geometry.h>
 #include <xcrack/crack/level_set_fields.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -72,14 +74,30 @@ namespace xcrack
                 const TrilinosWrappers::MPI::Vector &solution) const;
 
     /**
-     * Write the lips (with the opening as point data) and the fronts (with
-     * s) to @p file_name, a VTU file written by rank 0 from the pieces of
-     * all ranks.
+     * Values that a term on the lips (contact) gives per cell, written as
+     * cell data of the lip pieces: @p name, @p n_components (1, or 3 for a
+     * vector), and the values on the cell with id @p cell (zeros where the
+     * term has none; the fronts' cells get zeros).
+     */
+    struct LipField
+    {
+      std::string                                        name;
+      unsigned int                                       n_components = 1;
+      std::function<std::vector<double>(const CellId &)> value;
+    };
+
+    /**
+     * Write the lips (with the opening [[u]], the gap n . [[u]] and the
+     * slip [[u]] - (n . [[u]]) n as point data, n the unit normal to the
+     * lsn > 0 lip; the gap is negative where the lips interpenetrate) and
+     * the fronts (with s) to @p file_name, a VTU file written by rank 0
+     * from the pieces of all ranks; @p fields add cell data to the lips.
      */
     void
     write_vtu(const std::string                   &file_name,
               const DoFHandler<dim>               &dof_handler,
-              const TrilinosWrappers::MPI::Vector &solution) const;
+              const TrilinosWrappers::MPI::Vector &solution,
+              const std::vector<LipField>         &fields = {}) const;
 
   private:
     /// A piece of lip in one locally owned cell.
@@ -93,6 +111,11 @@ namespace xcrack
       /// toward which the lsn > 0 lip lies.
       std::vector<Tensor<1, dim>> reference_normal;
     };
+
+    /// The unit normal of @p piece in real space, to its lsn > 0 side
+    /// (zero for a piece of no extent).
+    static Tensor<1, dim>
+    real_normal(const Piece &piece);
 
     /// Displacement jumps at the corners of the local pieces.
     std::vector<std::vector<Tensor<1, dim>>>
