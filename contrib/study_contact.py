@@ -22,6 +22,12 @@ transition.
     contrib/build.sh release
     /usr/bin/python3 contrib/study_contact.py [--meshes 6] [--sweep-mesh 4]
     /usr/bin/python3 contrib/study_contact.py --friction [--sweep-mesh 4]
+
+With --augmented, the frictionless closed crack (one mesh) for the penalty
+and the augmented Lagrangian formulation against their coefficient: K's,
+Newton steps, the largest interpenetration, the L2 error and the time of
+the solve (assembly and linear solves).
+    /usr/bin/python3 contrib/study_contact.py --augmented [--sweep-mesh 4]
 """
 import argparse
 import csv
@@ -44,7 +50,8 @@ def k_ii_exact(mu):
         0., math.sin(beta) - mu * math.cos(beta))
 
 
-def run(work, meshes, space, coefficient, mu=None, tangential=1000):
+def run(work, meshes, space, coefficient, mu=None, tangential=1000,
+        formulation="penalty"):
     out = os.path.join(work, "out")
     prm = os.path.join(work, "run.prm")
     scene = "closed_crack_2d" if mu is None else "closed_crack_friction_2d"
@@ -60,13 +67,17 @@ end
 subsection Fracture parameters
   set Reference K = 0; {k_ii_exact(mu):.10f}
 end"""
+    section, name = (("Augmented Lagrangian", "Augmentation")
+                     if formulation == "augmented lagrangian"
+                     else ("Penalty", "Penalty"))
     with open(prm, "w") as f:
         f.write(f"""include {top}/prm/benchmarks/{scene}.prm
 set Output directory = {out}
-subsection Contact{friction}
-  subsection Penalty
+subsection Contact
+  set Formulation = {formulation}{friction}
+  subsection {section}
     set Pressure space = {space}
-    set Penalty coefficient = {coefficient}
+    set {name} coefficient = {coefficient}
   end
 end{exact}
 subsection Mesh refinement
@@ -119,6 +130,28 @@ def friction_tables(work, mesh):
             print(f"| {mu} | {c:.0e} | {friction_row(r, mu)} |")
 
 
+def augmented_table(work, mesh):
+    """Penalty against augmented Lagrangian over the coefficient."""
+    print("| formulation | coefficient | abs(K_I) / p sqrt(pi a) | K_II error | "
+          "Newton steps | smallest gap | L2 error | t_assemble + t_solve (s) |")
+    print("|---" * 8 + "|")
+    for formulation in ("penalty", "augmented lagrangian"):
+        for c in (1e1, 1e2, 1e3, 1e4, 1e5):
+            try:
+                r = run(work, mesh + 1, "cells", c,
+                        formulation=formulation)[-1]
+            except subprocess.CalledProcessError:
+                print(f"| {formulation} | {c:.0e} | Newton loop did not "
+                      "converge | | | | | |")
+                continue
+            print(f"| {formulation} | {c:.0e} | "
+                  f"{abs(float(r['K_I_1'])) / k_scale:.2e} | "
+                  f"{float(r['K_II_error']):.2e} | {r['newton_iterations']} | "
+                  f"{float(r['contact_gap_min']):.1e} | "
+                  f"{float(r['L2_error']):.3e} | "
+                  f"{float(r['t_assemble']) + float(r['t_solve']):.2f} |")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--meshes", type=int, default=6)
@@ -126,8 +159,13 @@ def main():
                         help="the mesh (0-based) of the coefficient sweep")
     parser.add_argument("--friction", action="store_true",
                         help="the frictional closed crack's tables instead")
+    parser.add_argument("--augmented", action="store_true",
+                        help="penalty against augmented Lagrangian instead")
     args = parser.parse_args()
     work = tempfile.mkdtemp(prefix="xcrack-contact-")
+    if args.augmented:
+        augmented_table(work, args.sweep_mesh)
+        return
     if args.friction:
         friction_tables(work, args.sweep_mesh)
         return

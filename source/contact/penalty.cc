@@ -5,6 +5,7 @@
 #include <xcrack/material.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -15,32 +16,66 @@ namespace xcrack
   {
     template <int dim>
     void
-    Penalty<dim>::declare_parameters(ParameterHandler &prm)
+    Penalty<dim>::declare_springs(ParameterHandler  &prm,
+                                  const std::string &section,
+                                  const std::string &name,
+                                  const std::string &default_value)
     {
-      prm.enter_subsection("Penalty");
+      std::string lower = name;
+      lower[0]          = std::tolower(lower[0]);
+      prm.enter_subsection(section);
       prm.declare_entry(
         "Pressure space",
         "cells",
         Patterns::Selection("lip points|cells"),
-        "Where the gap is penalised: at every point of the lips' quadrature "
+        "Where the gap is held: at every point of the lips' quadrature "
         "(the pressures oscillate from point to point where many points "
         "hold the few jump unknowns of a cell: the naive space), or its "
         "mean over each cell's lips (one pressure per cell).");
-      prm.declare_entry("Penalty coefficient",
-                        "1000",
+      prm.declare_entry(name + " coefficient",
+                        default_value,
                         Patterns::Double(),
                         "kappa = coefficient E / h (h: the cell's size): how "
                         "much stiffer than a cell's worth of material the "
-                        "springs between closed lips are (> 0). The lips "
-                        "interpenetrate by about p h / (coefficient E).");
-      prm.declare_entry("Tangential penalty coefficient",
-                        "1000",
+                        "springs between closed lips are (> 0).");
+      prm.declare_entry("Tangential " + lower + " coefficient",
+                        default_value,
                         Patterns::Double(),
                         "With friction: kappa_T = coefficient E / h, the "
                         "stiffness of the springs that hold sticking lips "
-                        "(> 0). Sticking lips slip by about t h / "
-                        "(coefficient E), t their tangential traction.");
+                        "(> 0).");
       prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    void
+    Penalty<dim>::parse_springs(ParameterHandler  &prm,
+                                const std::string &section,
+                                const std::string &name)
+    {
+      std::string lower = name;
+      lower[0]          = std::tolower(lower[0]);
+      const Plugins::ScopedSubsection scope(prm, section);
+      const std::string               normal = name + " coefficient";
+      const std::string tangential = "Tangential " + lower + " coefficient";
+      coefficient                  = prm.get_double(normal);
+      tangential_coefficient       = prm.get_double(tangential);
+      per_cell                     = (prm.get("Pressure space") == "cells");
+      for (const std::string &entry : {normal, tangential})
+        check_input(prm.get_double(entry) > 0,
+                    "Contact/" + section + "/" + entry + " = " +
+                      prm.get(entry) + ": must be positive.");
+    }
+
+
+
+    template <int dim>
+    void
+    Penalty<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      declare_springs(prm, "Penalty", "Penalty", "1000");
     }
 
 
@@ -49,17 +84,29 @@ namespace xcrack
     void
     Penalty<dim>::parse_parameters(ParameterHandler &prm)
     {
-      const Plugins::ScopedSubsection scope(prm, "Penalty");
-      coefficient            = prm.get_double("Penalty coefficient");
-      tangential_coefficient = prm.get_double("Tangential penalty coefficient");
-      per_cell               = (prm.get("Pressure space") == "cells");
-      check_input(coefficient > 0,
-                  "Contact/Penalty/Penalty coefficient = " +
-                    prm.get("Penalty coefficient") + ": must be positive.");
-      check_input(tangential_coefficient > 0,
-                  "Contact/Penalty/Tangential penalty coefficient = " +
-                    prm.get("Tangential penalty coefficient") +
-                    ": must be positive.");
+      parse_springs(prm, "Penalty", "Penalty");
+    }
+
+
+
+    template <int dim>
+    void
+    AugmentedLagrangian<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      Penalty<dim>::declare_springs(prm,
+                                    "Augmented Lagrangian",
+                                    "Augmentation",
+                                    "1000");
+    }
+
+
+
+    template <int dim>
+    void
+    AugmentedLagrangian<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      this->parse_springs(prm, "Augmented Lagrangian", "Augmentation");
+      this->augmented = true;
     }
 
 
@@ -77,6 +124,7 @@ namespace xcrack
           pressures.clear();
           tractions.clear();
           cell_states.clear();
+          multipliers.clear();
         }
       n_changed = 0;
       lip_points.clear();
@@ -85,6 +133,7 @@ namespace xcrack
       slip_measure   = 0;
       pressure_min   = std::numeric_limits<double>::max();
       pressure_max   = 0;
+      gap_min        = 0;
     }
 
 
@@ -93,7 +142,7 @@ namespace xcrack
     void
     Penalty<dim>::assemble(const Assembly::CellInput<dim> &input,
                            FullMatrix<double>             &matrix,
-                           Vector<double> &,
+                           Vector<double>                 &rhs,
                            std::string &)
     {
       const unsigned int n_points = lip_values->reinit(input.cell);
@@ -103,7 +152,8 @@ namespace xcrack
         input.cell->diameter() / std::sqrt(static_cast<double>(dim));
       const double kappa =
         coefficient * this->get_material().youngs_modulus / h;
-      const unsigned int n_dofs = matrix.m();
+      const double       kappa_t = tangential_coefficient * kappa / coefficient;
+      const unsigned int n_dofs  = matrix.m();
 
       const CellId id = input.cell->id();
       // The pressure's space: one value per lip point, or one per cell (the
@@ -122,6 +172,10 @@ namespace xcrack
       std::vector<double>         mean_gap(n_dofs);
       std::vector<Tensor<1, dim>> mean_slip(friction ? n_dofs : 0);
       std::vector<Tensor<1, dim>> n(n_points);
+      // Zero for the penalty; a cell new to the solve starts at zero.
+      std::vector<Multipliers>  none(n_groups);
+      std::vector<Multipliers> &lambda = (augmented ? multipliers[id] : none);
+      lambda.resize(n_groups);
       // The cell's means, for the output.
       typename Interface<dim>::LipState &state = cell_states[id];
       state                                    = {};
@@ -170,28 +224,46 @@ namespace xcrack
                     slip += (*input.iterate)[i] * mean_slip[i];
                 }
             }
-          const double   pressure = (gap <= 0 ? -kappa * gap : 0.);
+          // Uzawa: the multipliers take the tractions of this iterate under
+          // the last ones (not at a solve's first step, at u = 0).
+          if (augmented && input.iterate)
+            update(lambda[group], gap, slip, kappa, kappa_t);
+          // p = (lambda - kappa g)_+: closed where the lips touch (g <= 0 for
+          // the penalty, lambda = 0).
+          const bool   closed = (lambda[group].normal - kappa * gap >= 0);
+          const double pressure =
+            (closed ? lambda[group].normal - kappa * gap : 0.);
           Tensor<1, dim> tangential;
           bool           sliding = false;
-          if (gap <= 0)
+          if (closed)
             {
+              // The force -p n . [[phi_i]] ds: kappa's springs in the matrix,
+              // the multiplier in the right-hand side.
               for (unsigned int i = 0; i < n_dofs; ++i)
                 if (mean_gap[i] != 0)
-                  for (unsigned int j = 0; j < n_dofs; ++j)
-                    matrix(i, j) += kappa * length * mean_gap[i] * mean_gap[j];
+                  {
+                    rhs(i) += lambda[group].normal * length * mean_gap[i];
+                    for (unsigned int j = 0; j < n_dofs; ++j)
+                      matrix(i, j) +=
+                        kappa * length * mean_gap[i] * mean_gap[j];
+                  }
               if (friction)
-                tangential =
-                  add_friction(slip,
-                               mean_slip,
-                               mean_gap,
-                               pressure,
-                               kappa,
-                               tangential_coefficient * kappa / coefficient,
-                               length,
-                               matrix,
-                               sliding);
+                tangential = add_friction(slip,
+                                          lambda[group].tangential,
+                                          mean_slip,
+                                          mean_gap,
+                                          pressure,
+                                          kappa,
+                                          kappa_t,
+                                          length,
+                                          input.iterate,
+                                          matrix,
+                                          rhs,
+                                          sliding);
             }
-          const char now = (gap > 0 ? opened : sliding ? slipping : sticking);
+          const char now = (!closed ? opened : sliding ? slipping : sticking);
+          if (closed)
+            gap_min = std::min(gap_min, gap);
           if (known && now != status[group])
             {
               if (n_changed == 0)
@@ -241,48 +313,83 @@ namespace xcrack
     template <int dim>
     Tensor<1, dim>
     Penalty<dim>::add_friction(const Tensor<1, dim>              &slip,
+                               const Tensor<1, dim>              &multiplier,
                                const std::vector<Tensor<1, dim>> &mean_slip,
                                const std::vector<double>         &mean_gap,
                                const double                       pressure,
                                const double                       kappa,
                                const double                       kappa_t,
                                const double                       length,
+                               const Vector<double>              *iterate,
                                FullMatrix<double>                &matrix,
+                               Vector<double>                    &rhs,
                                bool                              &sliding) const
     {
       const unsigned int   n_dofs = matrix.m();
       const double         mu     = this->friction;
-      const Tensor<1, dim> trial  = -kappa_t * slip;
+      const Tensor<1, dim> trial  = multiplier - kappa_t * slip;
       sliding                     = (trial.norm() > mu * pressure);
       if (!sliding)
         {
-          // Sticking springs: the force kappa_T s . P_T [[phi_i]].
+          // Sticking springs: the force -(lambda_T - kappa_T s) . P_T
+          // [[phi_i]] ds.
           for (unsigned int i = 0; i < n_dofs; ++i)
             if (mean_slip[i].norm_square() != 0)
-              for (unsigned int j = 0; j < n_dofs; ++j)
-                matrix(i, j) +=
-                  kappa_t * length * (mean_slip[i] * mean_slip[j]);
+              {
+                rhs(i) += length * (multiplier * mean_slip[i]);
+                for (unsigned int j = 0; j < n_dofs; ++j)
+                  matrix(i, j) +=
+                    kappa_t * length * (mean_slip[i] * mean_slip[j]);
+              }
           return trial;
         }
-      // Slipping: the force F_i = mu p (s/|s|) . P_T [[phi_i]] ds with p =
-      // -kappa g; its derivative in u_j: mu kappa [-(s^ . P_T [[phi_i]])
-      // (n . [[phi_j]]) + (p / kappa |s|) P_T [[phi_i]] . (I - s^ s^)
-      // P_T [[phi_j]]] (the last term vanishes in 2D).
-      const double         s      = slip.norm();
-      const Tensor<1, dim> along  = slip / s;
-      const double         factor = mu * kappa * length;
+      // Slipping: t = mu p d, d = trial / |trial|, p = lambda - kappa g; the
+      // force F_i = -t . P_T [[phi_i]] ds has the derivative in u_j
+      // mu ds [kappa (n . [[phi_j]]) (d . P_T [[phi_i]]) + (p kappa_T /
+      // |trial|) P_T [[phi_i]] . (I - d d) P_T [[phi_j]]] (the last term
+      // vanishes in 2D), and the Newton step adds A u_k - F(u_k) to the
+      // right-hand side (zero for the penalty: F is then of degree one).
+      const double         norm      = trial.norm();
+      const Tensor<1, dim> direction = trial / norm;
+      const double         curvature = pressure * kappa_t / norm;
       for (unsigned int i = 0; i < n_dofs; ++i)
         {
           if (mean_slip[i].norm_square() == 0)
             continue;
-          const double along_i = along * mean_slip[i];
+          const double along_i = direction * mean_slip[i];
+          double       a_u     = 0;
           for (unsigned int j = 0; j < n_dofs; ++j)
-            matrix(i, j) += factor * (-along_i * mean_gap[j] +
-                                      pressure / (kappa * s) *
-                                        (mean_slip[i] * mean_slip[j] -
-                                         along_i * (along * mean_slip[j])));
+            {
+              const double a =
+                mu * length *
+                (kappa * mean_gap[j] * along_i +
+                 curvature * (mean_slip[i] * mean_slip[j] -
+                              along_i * (direction * mean_slip[j])));
+              matrix(i, j) += a;
+              if (iterate)
+                a_u += a * (*iterate)[j];
+            }
+          rhs(i) += a_u + mu * pressure * along_i * length;
         }
-      return -mu * pressure * along;
+      return mu * pressure * direction;
+    }
+
+
+
+    template <int dim>
+    void
+    Penalty<dim>::update(Multipliers          &lambda,
+                         const double          gap,
+                         const Tensor<1, dim> &slip,
+                         const double          kappa,
+                         const double          kappa_t) const
+    {
+      lambda.normal        = std::max(lambda.normal - kappa * gap, 0.);
+      Tensor<1, dim> trial = lambda.tangential - kappa_t * slip;
+      const double   bound = this->friction * lambda.normal;
+      if (trial.norm() > bound)
+        trial *= bound / trial.norm();
+      lambda.tangential = trial;
     }
 
 
@@ -308,11 +415,12 @@ namespace xcrack
       const double   closed = Utilities::MPI::sum(closed_measure, comm);
       const double   low    = Utilities::MPI::min(pressure_min, comm);
       const double   high   = Utilities::MPI::max(pressure_max, comm);
-      // The largest interpenetration is that of the largest pressure.
       std::map<std::string, double> values{
         {"contact_closed", lips > 0 ? closed / lips : 0.},
         {"contact_pressure_min", closed > 0 ? low : 0.},
-        {"contact_pressure_max", high}};
+        {"contact_pressure_max", high},
+        {"contact_gap_min",
+         Utilities::MPI::min(gap_min, this->get_mpi_communicator())}};
       if (this->friction > 0)
         {
           const double slipped       = Utilities::MPI::sum(slip_measure, comm);
@@ -363,6 +471,14 @@ namespace xcrack
         return Tensor<1, dim>();
       return it->second[q];
     }
+
+    XCRACK_REGISTER_PLUGIN(Interface,
+                           AugmentedLagrangian,
+                           "augmented lagrangian",
+                           "the penalty's springs plus multipliers updated "
+                           "by Uzawa's method at every Newton step: the "
+                           "lips do not interpenetrate at convergence "
+                           "(subsection Augmented Lagrangian).")
 
     XCRACK_REGISTER_PLUGIN(Interface,
                            Penalty,

@@ -96,6 +96,11 @@ expect_error minimum_both_kinds "Minimum loads/Neumann: boundary id 0 has a full
 # Contact: a coefficient that is not positive; lips that do not exist.
 expect_error contact_penalty "Contact/Penalty/Penalty coefficient = -1: must be positive" \
   < <(growth; printf 'subsection Contact\n  set Formulation = penalty\n  subsection Penalty\n    set Penalty coefficient = -1\n  end\nend\n')
+# The augmented Lagrangian's coefficient; a formulation that does not exist.
+expect_error augmented_coefficient "Contact/Augmented Lagrangian/Augmentation coefficient = 0: must be positive" \
+  < <(growth; printf 'subsection Contact\n  set Formulation = augmented lagrangian\n  subsection Augmented Lagrangian\n    set Augmentation coefficient = 0\n  end\nend\n')
+expect_error contact_unknown "lagrange.*for the entry named.*Formulation" \
+  < <(growth; printf 'subsection Contact\n  set Formulation = lagrange\nend\n')
 # Friction: a negative coefficient; friction on lips that do not touch; a
 # tangential penalty that is not positive; a solver for symmetric systems.
 expect_error friction_negative "Contact/Friction coefficient = -0.1: must be zero \\(frictionless\\) or positive" \

@@ -93,7 +93,9 @@ namespace xcrack
        * fraction of the closed lips that slip, and `contact_pressure_min`,
        * `contact_pressure_max`, the smallest and largest contact pressure
        * where they are (a uniform pressure that these show spread out
-       * oscillates: the pressure space is not stable there).
+       * oscillates: the pressure space is not stable there), and
+       * `contact_gap_min`, the most negative gap held where closed (the
+       * interpenetration; 0 if none).
        */
       virtual std::map<std::string, double>
       statistics() const = 0;

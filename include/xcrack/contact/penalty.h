@@ -43,6 +43,9 @@ namespace xcrack
      * homogeneous of degree one in u, so the Newton step's right-hand side
      * stays zero; in 2D the slipping force is linear once its direction is
      * known, and the solve is exact once the statuses settle.
+     *
+     * The same springs serve the augmented Lagrangian formulation
+     * (AugmentedLagrangian, below), which adds multipliers to them.
      */
     template <int dim>
     class Penalty : public Interface<dim>, public SimulatorAccess<dim>
@@ -78,32 +81,81 @@ namespace xcrack
       double
       closed_fraction(const Point<dim> &x, const double radius) const override;
 
+    protected:
+      /**
+       * Declare, in subsection @p section, `Pressure space` and the
+       * springs' coefficients `<name> coefficient` and `Tangential <name>
+       * coefficient` (@p name in lower case in the latter), defaulting to
+       * @p default_value; parse them back with parse_springs().
+       */
+      static void
+      declare_springs(ParameterHandler  &prm,
+                      const std::string &section,
+                      const std::string &name,
+                      const std::string &default_value);
+
+      void
+      parse_springs(ParameterHandler  &prm,
+                    const std::string &section,
+                    const std::string &name);
+
+      /// Whether the springs carry multipliers (AugmentedLagrangian).
+      bool augmented = false;
+
     private:
+      /// A group's multipliers: the pressure and the tangential traction
+      /// that the springs' forces are added to (zero for the penalty).
+      struct Multipliers
+      {
+        double         normal = 0;
+        Tensor<1, dim> tangential;
+      };
+
       /**
        * Add the tangent of friction at one closed group to @p matrix and
-       * return the tangential traction on the lsn > 0 lip: @p slip the
-       * group's mean slip, @p mean_slip[i] that of shape function i,
-       * @p mean_gap[i] its mean n . [[phi_i]], @p pressure the group's
-       * contact pressure, @p kappa_t the tangential springs' stiffness,
-       * @p length the group's length (area). @p sliding says whether the
-       * point slips.
+       * the Newton step's share A u_k - F(u_k) to @p rhs, and return the
+       * tangential traction on the lsn > 0 lip: @p slip the group's mean
+       * slip, @p multiplier its tangential multiplier, @p mean_slip[i] the
+       * mean of P_T [[phi_i]], @p mean_gap[i] that of n . [[phi_i]],
+       * @p pressure the group's contact pressure, @p kappa and @p kappa_t
+       * the springs' stiffnesses, @p length the group's length (area),
+       * @p iterate the cell's values of u_k (null at a solve's first step).
+       * @p sliding says whether the group slips.
        */
       Tensor<1, dim>
       add_friction(const Tensor<1, dim>              &slip,
+                   const Tensor<1, dim>              &multiplier,
                    const std::vector<Tensor<1, dim>> &mean_slip,
                    const std::vector<double>         &mean_gap,
                    const double                       pressure,
                    const double                       kappa,
                    const double                       kappa_t,
                    const double                       length,
+                   const Vector<double>              *iterate,
                    FullMatrix<double>                &matrix,
+                   Vector<double>                    &rhs,
                    bool                              &sliding) const;
+
+      /**
+       * Uzawa's update of @p multipliers at the gap @p gap and slip @p slip
+       * of the current iterate: the tractions the springs and the last
+       * multipliers give there, Coulomb's cone applied.
+       */
+      void
+      update(Multipliers          &multipliers,
+             const double          gap,
+             const Tensor<1, dim> &slip,
+             const double          kappa,
+             const double          kappa_t) const;
 
       double coefficient = 1e3;
       /// kappa_T / (E / h) of friction's sticking springs.
       double tangential_coefficient = 1e3;
       /// Pressure space = cells: one pressure per cell, from its mean gap.
       bool per_cell = true;
+
+      /// Per cell with lips, the multipliers of each group (augmented).
+      std::map<CellId, std::vector<Multipliers>> multipliers;
 
       /// A lip point's (or a cell's) status.
       enum Status : char
@@ -128,6 +180,8 @@ namespace xcrack
       /// of the closed ones, the smallest and largest pressure where closed.
       double lip_measure = 0, closed_measure = 0, slip_measure = 0;
       double pressure_min = 0, pressure_max = 0;
+      /// The smallest gap held at a closed group (the interpenetration).
+      double gap_min = 0;
       /// Every lip point of the last assembly on this rank: where it is,
       /// its share of the lips, whether it is closed.
       struct LipPoint
@@ -139,6 +193,35 @@ namespace xcrack
       std::vector<LipPoint> lip_points;
 
       std::unique_ptr<LipValues<dim>> lip_values;
+    };
+
+
+
+    /**
+     * `augmented lagrangian`: the penalty's springs plus multipliers that
+     * Uzawa's method updates at every Newton step (Alart and Curnier's
+     * augmented Lagrangian; Code_Aster's ALGO_CONT = PENALISATION with
+     * augmentation, Simo and Laursen 1992): the pressure is p = (lambda -
+     * kappa g)_+ and the friction traction Coulomb's projection of lambda_T
+     * - kappa_T s, and after each solve lambda and lambda_T take the
+     * values p and t of the new iterate. At convergence g = 0 where closed
+     * and the sticking lips do not slip: the constraint is exact whatever
+     * the coefficient, which now sets only how fast Uzawa converges (its
+     * error contracts by about 1 / (1 + coefficient) per step) and how
+     * well the system is conditioned. The Newton loop's residual is kappa
+     * g on the closed lips, so that `Nonlinear solver/Tolerance` is the
+     * interpenetration's bound. Same pressure spaces and system as the
+     * penalty's: symmetric without friction.
+     */
+    template <int dim>
+    class AugmentedLagrangian : public Penalty<dim>
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      void
+      parse_parameters(ParameterHandler &prm) override;
     };
   } // namespace Contact
 } // namespace xcrack
