@@ -126,7 +126,15 @@ namespace xcrack
           cell_states.clear();
           multipliers.clear();
         }
-      n_changed = 0;
+      // Uzawa updates the multipliers once the statuses have settled under
+      // the last ones (no status changed in the last assembly, on any
+      // rank): updating them at every step lets a group that sits where
+      // the pressure space is not stable switch open and closed for ever.
+      update_multipliers =
+        augmented && !first &&
+        Utilities::MPI::sum(n_switched, this->get_mpi_communicator()) == 0;
+      n_changed  = 0;
+      n_switched = 0;
       lip_points.clear();
       lip_measure    = 0;
       closed_measure = 0;
@@ -226,7 +234,7 @@ namespace xcrack
             }
           // Uzawa: the multipliers take the tractions of this iterate under
           // the last ones (not at a solve's first step, at u = 0).
-          if (augmented && input.iterate)
+          if (update_multipliers && input.iterate)
             update(lambda[group], gap, slip, kappa, kappa_t);
           // p = (lambda - kappa g)_+: closed where the lips touch (g <= 0 for
           // the penalty, lambda = 0).
@@ -265,6 +273,14 @@ namespace xcrack
           if (closed)
             gap_min = std::min(gap_min, gap);
           if (known && now != status[group])
+            {
+              if (n_changed == 0)
+                first_changed = lip_values->point(first);
+              ++n_changed;
+              ++n_switched;
+            }
+          // Multipliers left for the next assembly are not converged yet.
+          else if (augmented && closed && input.iterate && !update_multipliers)
             {
               if (n_changed == 0)
                 first_changed = lip_values->point(first);

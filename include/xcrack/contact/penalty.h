@@ -154,6 +154,9 @@ namespace xcrack
       /// Pressure space = cells: one pressure per cell, from its mean gap.
       bool per_cell = true;
 
+      /// Whether this assembly updates the multipliers (augmented, statuses
+      /// settled).
+      bool update_multipliers = false;
       /// Per cell with lips, the multipliers of each group (augmented).
       std::map<CellId, std::vector<Multipliers>> multipliers;
 
@@ -175,6 +178,9 @@ namespace xcrack
       /// Points whose status (open or closed) the last assembly changed,
       /// and where the first of them is.
       unsigned int n_changed = 0;
+      /// Of those, the groups that switched between open, stick and slip
+      /// (the rest: augmented groups whose multipliers wait for an update).
+      unsigned int n_switched = 0;
       Point<dim>   first_changed;
       /// Of the last assembly, on this rank: the lips' length (area), that
       /// of the closed ones, the smallest and largest pressure where closed.
@@ -199,7 +205,8 @@ namespace xcrack
 
     /**
      * `augmented lagrangian`: the penalty's springs plus multipliers that
-     * Uzawa's method updates at every Newton step (Alart and Curnier's
+     * Uzawa's method updates at the Newton steps whose statuses have
+     * settled (Alart and Curnier's
      * augmented Lagrangian; Code_Aster's ALGO_CONT = PENALISATION with
      * augmentation, Simo and Laursen 1992): the pressure is p = (lambda -
      * kappa g)_+ and the friction traction Coulomb's projection of lambda_T

@@ -9,8 +9,12 @@
 # than a thousandth of the largest slip). Without contact the same compression
 # makes the lips pass through each other: the gap is negative, and no
 # contact field is written.
+# A Newton loop that does not converge (the closed crack allowed one step
+# where it needs two) stops with exit status 3, a message naming the load
+# state, the residual and the statuses still changing, and the same reason
+# in run.json.
 #
-#   contact_output.sh XCRACK_EXECUTABLE SOURCE_DIRECTORY
+#   contact_checks.sh XCRACK_EXECUTABLE SOURCE_DIRECTORY
 set -u
 xcrack="$1"
 scene="$2/prm/benchmarks/closed_crack_friction_2d.prm"
@@ -111,5 +115,23 @@ if bad == 0:
 sys.exit(1 if bad else 0)
 PY
 
-[ "$failures" -eq 0 ] || { echo "contact_output: $failures check(s) failed"; exit 1; }
-echo "contact_output: all checks passed"
+cat > newton.prm <<PRM
+include $2/prm/benchmarks/closed_crack_2d.prm
+set Output directory = out_newton
+subsection Mesh refinement
+  set Number of meshes = 1
+end
+subsection Nonlinear solver
+  set Maximum iterations = 1
+end
+PRM
+"$xcrack" newton.prm > newton.log 2>&1
+status=$?
+[ "$status" -eq 3 ] || fail "Newton: exit status $status, expected 3"
+regex="the Newton iterations of the maximum load of step 0 did not converge in 1 steps \(Nonlinear solver/Maximum iterations\): residual .* statuses still changing \(the first at"
+grep -Eq "numerical failure: $regex" newton.log || { fail "Newton: message"; cat newton.log; }
+grep -Eq "\"status\": \"failed\"" out_newton/run.json && grep -Eq "\"reason\": \"$regex" out_newton/run.json ||
+  { fail "Newton: run.json"; cat out_newton/run.json; }
+
+[ "$failures" -eq 0 ] || { echo "contact_checks: $failures check(s) failed"; exit 1; }
+echo "contact_checks: all checks passed"

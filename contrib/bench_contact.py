@@ -1,0 +1,98 @@
+#!/usr/bin/python3
+"""The cost of contact: the same solve with and without it.
+
+Runs the closed crack (prm/benchmarks/closed_crack_2d.prm, six meshes) and
+the closed penny (prm/benchmarks/closed_penny_3d.prm, four meshes) with
+`Contact/Formulation = none`, `penalty`, `augmented lagrangian` and (2D)
+penalty with friction mu = 0.3, on one and two MPI ranks, several times
+(doc/verification.md has the 3D frictional run: MUMPS LU, minutes), and
+prints
+per case the medians, on the last mesh, of the Newton steps, the assembly
+and solve times (statistics.csv: t_assemble, t_solve, summed over the Newton
+steps) and of the whole solve (every phase of that row), with the ratio of
+the last to the same scene without contact measured in the same session.
+Without contact the lips pass through each other: the solve is the linear
+one the scene would be without the contact term.
+
+    contrib/build.sh release
+    /usr/bin/python3 contrib/bench_contact.py [--runs 3] [--scenes 2d 3d]
+"""
+import argparse
+import csv
+import os
+import statistics
+import subprocess
+import tempfile
+
+top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+xcrack = os.path.join(top, "build", "release", "xcrack")
+scenes = {"2d": ("closed_crack_2d", 6), "3d": ("closed_penny_3d", 4)}
+cases = {
+    "none": "set Formulation = none",
+    "penalty": "set Formulation = penalty",
+    "augmented lagrangian": "set Formulation = augmented lagrangian",
+    "penalty, mu = 0.3": "set Formulation = penalty\n"
+                         "  set Friction coefficient = 0.3",
+}
+
+
+def run(work, scene, case, ranks):
+    name, meshes = scenes[scene]
+    out = os.path.join(work, "out")
+    prm = os.path.join(work, "run.prm")
+    # Friction's unsymmetric systems: MUMPS (CG takes only SPD ones).
+    solver = ("subsection Linear solver\n  set Type = direct\nend\n"
+              if "mu" in case else "")
+    with open(prm, "w") as f:
+        f.write(f"""include {top}/prm/benchmarks/{name}.prm
+set Output directory = {out}
+subsection Contact
+  {cases[case]}
+end
+subsection Mesh refinement
+  set Number of meshes = {meshes}
+end
+subsection Output
+  set Timing summary = false
+end
+{solver}""")
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1",
+               OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    command = ([xcrack, prm] if ranks == 1 else
+               ["mpirun", "-np", str(ranks), xcrack, prm])
+    subprocess.run(command, check=True, env=env, stdout=subprocess.DEVNULL)
+    with open(os.path.join(out, "statistics.csv")) as f:
+        last = list(csv.DictReader(f))[-1]
+    phases = sum(float(v) for k, v in last.items()
+                 if k.startswith("t_") and v != "")
+    return (int(last["dofs"]), int(last["newton_iterations"]),
+            float(last["t_assemble"]), float(last["t_solve"]), phases)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--runs", type=int, default=3)
+    parser.add_argument("--scenes", nargs="+", default=["2d", "3d"])
+    args = parser.parse_args()
+    work = tempfile.mkdtemp(prefix="xcrack-bench-contact-")
+    print("| scene | ranks | contact | DoFs | Newton steps | t_assemble (s) | "
+          "t_solve (s) | solve, all phases (s) | ratio to none |")
+    print("|---" * 9 + "|")
+    for scene in args.scenes:
+        for ranks in (1, 2):
+            base = None
+            for case in cases:
+                if scene == "3d" and "mu" in case:
+                    continue
+                runs = [run(work, scene, case, ranks) for _ in range(args.runs)]
+                dofs, steps = runs[0][0], runs[0][1]
+                assemble, solve, total = (
+                    statistics.median(r[i] for r in runs) for i in (2, 3, 4))
+                base = total if case == "none" else base
+                print(f"| {scenes[scene][0]} | {ranks} | {case} | {dofs:,} | "
+                      f"{steps} | {assemble:.2f} | {solve:.2f} | {total:.2f} | "
+                      f"{total / base:.2f} |", flush=True)
+
+
+if __name__ == "__main__":
+    main()
