@@ -199,7 +199,7 @@ namespace xcrack
           for (unsigned int q = first; q < last; ++q)
             {
               const double ds = lip_values->normal_ds(q).norm();
-              n[q]            = lip_values->normal_ds(q) / ds;
+              n[q]            = lip_values->crack_normal(q);
               length += ds;
               for (unsigned int i = 0; i < n_dofs; ++i)
                 {

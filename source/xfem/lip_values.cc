@@ -18,6 +18,7 @@ namespace xcrack
   {
     points.clear();
     normals_ds.clear();
+    crack_normals.clear();
     jumps.clear();
     const auto rule = enrichment.lip_quadrature(cell);
     if (rule.size() == 0)
@@ -33,11 +34,24 @@ namespace xcrack
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       components[i] = fe.system_to_component_index(i).first;
     jumps.resize(rule.size(), std::vector<double>(fe.n_dofs_per_cell()));
+    const std::vector<double> lsn =
+      enrichment.level_set_values(cell, false).first;
     for (unsigned int q = 0; q < rule.size(); ++q)
       {
         points.push_back(sides.quadrature_point(2 * q));
         normals_ds.push_back(CellQuadrature::mapped_normal<dim>(
           sides.jacobian(2 * q), rule.normal_vector(q), rule.weight(q)));
+        Tensor<1, dim> gradient;
+        for (unsigned int v = 0; v < lsn.size(); ++v)
+          gradient +=
+            lsn[v] *
+            GeometryInfo<dim>::d_linear_shape_function_gradient(rule.point(q),
+                                                                v);
+        gradient =
+          transpose(invert(Tensor<2, dim>(sides.jacobian(2 * q)))) * gradient;
+        crack_normals.push_back(gradient.norm() > 0 ?
+                                  gradient / gradient.norm() :
+                                  normals_ds.back() / normals_ds.back().norm());
         for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
           jumps[q][i] =
             sides.shape_value(i, 2 * q) - sides.shape_value(i, 2 * q + 1);
@@ -70,6 +84,15 @@ namespace xcrack
   LipValues<dim>::normal_ds(const unsigned int q) const
   {
     return normals_ds[q];
+  }
+
+
+
+  template <int dim>
+  const Tensor<1, dim> &
+  LipValues<dim>::crack_normal(const unsigned int q) const
+  {
+    return crack_normals[q];
   }
 
 

@@ -50,6 +50,18 @@ namespace xcrack
     const Tensor<1, dim> &
     normal_ds(const unsigned int q) const;
 
+    /**
+     * The unit normal of the crack's level set lsn before fit to vertex at
+     * point @p q (pointing to the lsn > 0 lip): the direction in which
+     * contact measures the gap. Fit to vertex moves the crack through
+     * nearby nodes and kinks its lips there by up to `Fit to vertex
+     * tolerance` radians; lips that slide along each other would lock at
+     * such kinks, which the crack the fields describe does not have.
+     * Elsewhere the direction of normal_ds().
+     */
+    const Tensor<1, dim> &
+    crack_normal(const unsigned int q) const;
+
     /// The jump of the value of shape function @p i (of its one nonzero
     /// component, component(i)) at point @p q.
     double
@@ -68,7 +80,7 @@ namespace xcrack
     const Enrichment<dim> &enrichment;
 
     std::vector<Point<dim>>     points;
-    std::vector<Tensor<1, dim>> normals_ds;
+    std::vector<Tensor<1, dim>> normals_ds, crack_normals;
     /// jumps[q][i]
     std::vector<std::vector<double>> jumps;
     std::vector<unsigned int>        components;
