@@ -14,7 +14,11 @@
 // (1e-8 of the load; below 1e-7, where the penalty with the same
 // coefficient leaves 3e-2 and 3e-4) for coefficients 10 and 1000, in two
 // Newton steps: the penalty's uniform pressure is the exact one, and the
-// first Uzawa update makes it the multiplier (at most three allowed).
+// first Uzawa update makes it the multiplier (at most three allowed). With
+// `lagrange` the lips are held exactly on every multiplier space (vital
+// nodes, edges, cells: each holds the constant pressure): the error is the
+// linear solve's round-off (1e-8, where the penalty at c = 1e6 leaves
+// 3e-7) and the pressure 1 to 1e-9 at every lip point, in one Newton step.
 
 #include <deal.II/base/mpi.h>
 
@@ -38,7 +42,10 @@ yes(const bool b)
 
 template <int dim>
 xcrack::Statistics
-run(const unsigned int degree, const std::string &formulation, const double c)
+run(const unsigned int degree,
+    const std::string &formulation,
+    const double       c,
+    const std::string &space = "")
 {
   // E = 1, nu = 0.3, uniaxial stress sigma_nn = -1 along the last axis,
   // plane strain in 2D (eps_xx = nu (1 + nu) / E, eps_yy = -(1 - nu^2) /
@@ -48,11 +55,15 @@ run(const unsigned int degree, const std::string &formulation, const double c)
      << "subsection Output\n set Write vtu = false\n"
      << " set Timing summary = false\nend\n"
      << "subsection Discretization\n set Degree = " << degree << "\nend\n"
-     << "subsection Contact\n set Formulation = " << formulation << "\n"
-     << (formulation == "augmented lagrangian" ?
-           " subsection Augmented Lagrangian\n  set Augmentation" :
-           " subsection Penalty\n  set Penalty")
-     << " coefficient = " << c << "\n end\nend\n";
+     << "subsection Contact\n set Formulation = " << formulation << "\n";
+  if (formulation == "lagrange")
+    in << " subsection Lagrange\n  set Multiplier space = " << space
+       << "\n end\nend\n";
+  else
+    in << (formulation == "augmented lagrangian" ?
+             " subsection Augmented Lagrangian\n  set Augmentation" :
+             " subsection Penalty\n  set Penalty")
+       << " coefficient = " << c << "\n end\nend\n";
   if (dim == 2)
     in << "subsection Mesh\n set Subdivisions = 4, 4\n"
        << " set Lower corner = -1, -1\n set Upper corner = 1, 1\nend\n"
@@ -127,6 +138,25 @@ check_augmented(const unsigned int degree)
     }
 }
 
+template <int dim>
+void
+check_lagrange(const unsigned int degree)
+{
+  for (const std::string space : {"vital nodes", "edges", "cells"})
+    {
+      const auto         stats = run<dim>(degree, "lagrange", 0, space);
+      const unsigned int steps = stats.get("newton_iterations", 0);
+      logfile << dim << "D Q" << degree << ", Lagrange multipliers on " << space
+              << ": L2 error below 1e-7: "
+              << yes(stats.get("L2_error", 0) < 1e-7)
+              << ", pressure uniform (min and max within 1e-9 of 1): "
+              << yes(std::abs(stats.get("contact_pressure_min", 0) - 1) <
+                       1e-9 &&
+                     std::abs(stats.get("contact_pressure_max", 0) - 1) < 1e-9)
+              << ", " << steps << " Newton step(s)" << std::endl;
+    }
+}
+
 int
 main(int argc, char **argv)
 {
@@ -138,6 +168,9 @@ main(int argc, char **argv)
   check_augmented<2>(1);
   check_augmented<2>(2);
   check_augmented<3>(1);
+  check_lagrange<2>(1);
+  check_lagrange<2>(2);
+  check_lagrange<3>(1);
   try
     {
       run<2>(1, "none", 1);

@@ -12,6 +12,7 @@
 #include <deal.II/hp/fe_values.h>
 #include <deal.II/hp/q_collection.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/non_matching/immersed_surface_quadrature.h>
@@ -178,6 +179,25 @@ namespace xcrack
     /// Enriched DoFs that are not constrained, over all ranks.
     types::global_dof_index
     n_free_enriched_dofs() const;
+    /**
+     * The contributions' own unknowns (Lagrange multipliers) on the current
+     * space: set up, their offsets after the DoFs, and the system's owned
+     * rows (the owned DoFs alone without any).
+     */
+    void
+    setup_own_unknowns();
+    /**
+     * The system's matrix, right-hand side and solution with own unknowns:
+     * @p dsp, the DoFs' pattern on @p dof_rows, extended by the couplings of
+     * the cells' own unknowns.
+     */
+    void
+    setup_system_with_own_unknowns(const DynamicSparsityPattern &dsp,
+                                   const IndexSet               &dof_rows);
+    /// The constraints the assembly condenses with (those of the DoFs, on
+    /// the system's index range when there are own unknowns).
+    const AffineConstraints<double> &
+    assembly_constraints() const;
     /// @}
 
     /// @name Assembly (assembly.cc)
@@ -544,6 +564,21 @@ namespace xcrack
     TrilinosWrappers::MPI::Vector  system_rhs;
     /// Solution with ghost entries, for output, errors and refinement.
     TrilinosWrappers::MPI::Vector solution;
+
+    /// @name Unknowns of the contributions' own (Lagrange multipliers)
+    /// @{
+    /// The system's unknowns are the DoFs, then those of each contribution
+    /// (at n_dofs + own_offsets[c]); without any, the DoFs alone.
+    std::vector<types::global_dof_index> own_offsets;
+    types::global_dof_index              n_own_unknowns = 0;
+    /// The system's locally owned rows (the owned DoFs and own unknowns).
+    IndexSet system_owned;
+    /// The constraints on the system's index range (those of the DoFs),
+    /// for its assembly; only with own unknowns.
+    AffineConstraints<double> system_constraints;
+    /// The last solve's unknowns, DoFs and own alike (owned entries).
+    TrilinosWrappers::MPI::Vector system_solution;
+    /// @}
 
     /// The enriched DoFs (owned and ghost) of the current space.
     IndexSet enriched_dofs;

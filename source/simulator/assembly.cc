@@ -55,8 +55,9 @@ namespace xcrack
     hp::FEValues<dim> hp_fe_values(fe_collection, quadrature_collection, flags);
     SpecialFEValues   special_values;
 
-    FullMatrix<double>                   cell_matrix;
-    Vector<double>                       cell_rhs, iterate;
+    const AffineConstraints<double>     &condensing = assembly_constraints();
+    FullMatrix<double>                   cell_matrix, own_matrix;
+    Vector<double>                       cell_rhs, own_rhs, iterate;
     std::vector<types::global_dof_index> local_dof_indices;
     Assembly::CellInput<dim>             input;
     input.state   = &state;
@@ -88,11 +89,37 @@ namespace xcrack
 
           local_dof_indices.resize(n_dofs);
           cell->get_dof_indices(local_dof_indices);
-          constraints.distribute_local_to_global(cell_matrix,
-                                                 cell_rhs,
-                                                 local_dof_indices,
-                                                 system_matrix,
-                                                 system_rhs);
+          condensing.distribute_local_to_global(cell_matrix,
+                                                cell_rhs,
+                                                local_dof_indices,
+                                                system_matrix,
+                                                system_rhs);
+
+          // The rows and columns of the contributions' own unknowns on the
+          // cell, after its DoFs.
+          if (n_own_unknowns > 0)
+            for (unsigned int c = 0; c < contributions.size(); ++c)
+              {
+                const std::vector<unsigned int> own =
+                  contributions[c]->own_unknowns_of(cell);
+                if (own.empty())
+                  continue;
+                own_matrix.reinit(n_dofs + own.size(), n_dofs + own.size());
+                own_rhs.reinit(n_dofs + own.size());
+                contributions[c]->assemble_own(input,
+                                               n_dofs,
+                                               own_matrix,
+                                               own_rhs);
+                local_dof_indices.resize(n_dofs);
+                for (const unsigned int k : own)
+                  local_dof_indices.push_back(dof_handler.n_dofs() +
+                                              own_offsets[c] + k);
+                condensing.distribute_local_to_global(own_matrix,
+                                                      own_rhs,
+                                                      local_dof_indices,
+                                                      system_matrix,
+                                                      system_rhs);
+              }
         }
 
     // Every rank stops with the first culprit any rank found.
@@ -144,10 +171,15 @@ namespace xcrack
   LinearSolver::MatrixProperty
   Simulator<dim>::matrix_property() const
   {
+    bool saddle_point = false;
     for (const Assembly::Contribution<dim> *contribution : contributions)
-      if (!contribution->is_symmetric())
-        return LinearSolver::MatrixProperty::general;
-    return LinearSolver::MatrixProperty::spd;
+      {
+        if (!contribution->is_symmetric())
+          return LinearSolver::MatrixProperty::general;
+        saddle_point = saddle_point || contribution->has_own_unknowns();
+      }
+    return (saddle_point ? LinearSolver::MatrixProperty::symmetric :
+                           LinearSolver::MatrixProperty::spd);
   }
 
 

@@ -402,7 +402,8 @@ namespace xcrack
         statistics.add_value(column, value);
     if (enrichment && Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
       statistics.add_value("work_imbalance", work_imbalance);
-    if (dof_handler.n_dofs() <= run_parameters.condition_number_limit)
+    if (dof_handler.n_dofs() <= run_parameters.condition_number_limit &&
+        n_own_unknowns == 0)
       statistics.add_value("condition_number",
                            condition_number(system_matrix, constraints));
 

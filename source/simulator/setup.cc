@@ -50,6 +50,7 @@ namespace xcrack
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
 
+    setup_own_unknowns();
     make_constraints(load_cycle.maximum());
 
     // Gathered DoFs are tied to masters that may be owned by another rank
@@ -59,6 +60,14 @@ namespace xcrack
       rows.add_indices(enrichment->gathering_masters());
     DynamicSparsityPattern dsp(rows);
     DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    solution.reinit(locally_owned_dofs,
+                    locally_relevant_dofs,
+                    mpi_communicator);
+    if (n_own_unknowns > 0)
+      {
+        setup_system_with_own_unknowns(dsp, rows);
+        return;
+      }
     SparsityTools::distribute_sparsity_pattern(dsp,
                                                locally_owned_dofs,
                                                mpi_communicator,
@@ -68,9 +77,92 @@ namespace xcrack
                          dsp,
                          mpi_communicator);
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
-    solution.reinit(locally_owned_dofs,
-                    locally_relevant_dofs,
-                    mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_own_unknowns()
+  {
+    own_offsets.assign(contributions.size(), 0);
+    n_own_unknowns = 0;
+    for (unsigned int c = 0; c < contributions.size(); ++c)
+      {
+        contributions[c]->setup_own_unknowns();
+        own_offsets[c] = n_own_unknowns;
+        n_own_unknowns += contributions[c]->n_own_unknowns();
+      }
+    system_owned = locally_owned_dofs;
+    if (n_own_unknowns == 0)
+      return;
+    const types::global_dof_index n_dofs = dof_handler.n_dofs();
+    system_owned                         = IndexSet(n_dofs + n_own_unknowns);
+    system_owned.add_indices(locally_owned_dofs);
+    for (unsigned int c = 0; c < contributions.size(); ++c)
+      {
+        const auto [begin, end] = contributions[c]->owned_own_unknowns();
+        if (end > begin)
+          system_owned.add_range(n_dofs + own_offsets[c] + begin,
+                                 n_dofs + own_offsets[c] + end);
+      }
+    system_owned.compress();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_system_with_own_unknowns(
+    const DynamicSparsityPattern &dsp,
+    const IndexSet               &dof_rows)
+  {
+    const types::global_dof_index n_dofs = dof_handler.n_dofs();
+    const types::global_dof_index n      = n_dofs + n_own_unknowns;
+    // Any rank may write to the row of any own unknown its cells couple to.
+    IndexSet rows(n);
+    rows.add_indices(dof_rows);
+    rows.add_range(n_dofs, n);
+    DynamicSparsityPattern system_dsp(n, n, rows);
+    for (const types::global_dof_index row : dof_rows)
+      for (auto entry = dsp.begin(row); entry != dsp.end(row); ++entry)
+        system_dsp.add(row, entry->column());
+    std::vector<types::global_dof_index> indices;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (unsigned int c = 0; c < contributions.size(); ++c)
+          {
+            const std::vector<unsigned int> own =
+              contributions[c]->own_unknowns_of(cell);
+            if (own.empty())
+              continue;
+            indices.resize(cell->get_fe().n_dofs_per_cell());
+            cell->get_dof_indices(indices);
+            for (const unsigned int k : own)
+              indices.push_back(n_dofs + own_offsets[c] + k);
+            system_constraints.add_entries_local_to_global(indices,
+                                                           system_dsp,
+                                                           false);
+          }
+    SparsityTools::distribute_sparsity_pattern(system_dsp,
+                                               system_owned,
+                                               mpi_communicator,
+                                               rows);
+    system_matrix.reinit(system_owned,
+                         system_owned,
+                         system_dsp,
+                         mpi_communicator);
+    system_rhs.reinit(system_owned, mpi_communicator);
+    system_solution.reinit(system_owned, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  const AffineConstraints<double> &
+  Simulator<dim>::assembly_constraints() const
+  {
+    return (n_own_unknowns > 0 ? system_constraints : constraints);
   }
 
 
@@ -151,6 +243,22 @@ namespace xcrack
       enrichment->make_constraints(dof_handler, constraints, gathering_fronts);
     make_dirichlet_constraints(state);
     constraints.close();
+    if (n_own_unknowns == 0)
+      return;
+    // The same constraints on the system's index range: the own unknowns
+    // are free, and the assembly condenses their couplings to constrained
+    // DoFs (and the Dirichlet data of those) with them.
+    const types::global_dof_index n_dofs = dof_handler.n_dofs();
+    IndexSet                      lines(n_dofs + n_own_unknowns);
+    lines.add_indices(locally_relevant_dofs);
+    lines.add_range(n_dofs, n_dofs + n_own_unknowns);
+    system_constraints.clear();
+    system_constraints.reinit(lines);
+    system_constraints.merge(
+      constraints,
+      AffineConstraints<double>::MergeConflictBehavior::no_conflicts_allowed,
+      true);
+    system_constraints.close();
   }
 
 
@@ -294,6 +402,14 @@ namespace xcrack
                     "Number of cracks = 0).");
     }
     create_contributions();
+    bool saddle_point = false;
+    for (const Assembly::Contribution<dim> *contribution : contributions)
+      saddle_point = saddle_point || contribution->has_own_unknowns();
+    check_input(!saddle_point || linear_solver->accepts_saddle_point(),
+                "Linear solver/Type = " + linear_solver_type +
+                  " cannot solve the saddle-point systems of Contact/"
+                  "Formulation = lagrange (its multipliers have no "
+                  "diagonal for a preconditioner): use Type = direct.");
     check_input(linear_solver->accepts(matrix_property()),
                 "Linear solver/Type = " + linear_solver_type +
                   " cannot solve the " +

@@ -52,16 +52,40 @@ namespace xcrack
       system_matrix, matrix_property(), [this]() {
         return translation_modes(dof_handler, enrichment != nullptr);
       }};
-    TrilinosWrappers::MPI::Vector distributed(locally_owned_dofs,
-                                              mpi_communicator);
+    TrilinosWrappers::MPI::Vector distributed(system_owned, mpi_communicator);
     const unsigned int            iterations =
       linear_solver->solve(system, distributed, system_rhs);
     // The factorization references the matrix: keep it only for the dual
     // solves of the K error estimate, which follow at once.
     if (!(fracture_parameters.error_estimate && fracture_parameters.compute))
       linear_solver->release();
-    constraints.distribute(distributed);
-    solution = distributed;
+    if (n_own_unknowns == 0)
+      {
+        constraints.distribute(distributed);
+        solution = distributed;
+        return iterations;
+      }
+
+    // The DoFs, and each contribution's own unknowns on every rank.
+    TrilinosWrappers::MPI::Vector dofs(locally_owned_dofs, mpi_communicator);
+    for (const types::global_dof_index i : locally_owned_dofs)
+      dofs[i] = distributed[i];
+    constraints.distribute(dofs);
+    solution        = dofs;
+    system_solution = distributed;
+    for (const types::global_dof_index i : locally_owned_dofs)
+      system_solution[i] = dofs[i];
+    for (unsigned int c = 0; c < contributions.size(); ++c)
+      {
+        std::vector<double> values(contributions[c]->n_own_unknowns(), 0.);
+        if (values.empty())
+          continue;
+        const auto [begin, end] = contributions[c]->owned_own_unknowns();
+        for (unsigned int k = begin; k < end; ++k)
+          values[k] = distributed[dof_handler.n_dofs() + own_offsets[c] + k];
+        Utilities::MPI::sum(values, mpi_communicator, values);
+        contributions[c]->set_own_values(values);
+      }
     return iterations;
   }
 
@@ -70,14 +94,16 @@ namespace xcrack
   std::pair<double, double>
   Simulator<dim>::residual_norms() const
   {
-    TrilinosWrappers::MPI::Vector residual(locally_owned_dofs,
-                                           mpi_communicator),
-      iterate(locally_owned_dofs, mpi_communicator), load(system_rhs);
-    iterate = solution;
+    TrilinosWrappers::MPI::Vector residual(system_owned, mpi_communicator),
+      iterate(system_owned, mpi_communicator), load(system_rhs);
+    if (n_own_unknowns > 0)
+      iterate = system_solution;
+    else
+      iterate = solution;
     system_matrix.vmult(residual, iterate);
     residual.sadd(-1., 1., system_rhs);
-    constraints.set_zero(residual);
-    constraints.set_zero(load);
+    assembly_constraints().set_zero(residual);
+    assembly_constraints().set_zero(load);
     return {residual.l2_norm(), load.l2_norm()};
   }
 

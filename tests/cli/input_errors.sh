@@ -99,8 +99,19 @@ expect_error contact_penalty "Contact/Penalty/Penalty coefficient = -1: must be 
 # The augmented Lagrangian's coefficient; a formulation that does not exist.
 expect_error augmented_coefficient "Contact/Augmented Lagrangian/Augmentation coefficient = 0: must be positive" \
   < <(growth; printf 'subsection Contact\n  set Formulation = augmented lagrangian\n  subsection Augmented Lagrangian\n    set Augmentation coefficient = 0\n  end\nend\n')
-expect_error contact_unknown "lagrange.*for the entry named.*Formulation" \
-  < <(growth; printf 'subsection Contact\n  set Formulation = lagrange\nend\n')
+expect_error contact_unknown "mortar.*for the entry named.*Formulation" \
+  < <(growth; printf 'subsection Contact\n  set Formulation = mortar\nend\n')
+# Lagrange multipliers: no friction yet, a saddle point that only the direct
+# solver takes, a multiplier space that gathered tip DoFs cannot meet, a
+# space that does not exist.
+expect_error lagrange_friction "Contact/Formulation = lagrange with Friction coefficient = 0.3: this formulation has no friction yet" \
+  < <(growth; printf 'subsection Contact\n  set Formulation = lagrange\n  set Friction coefficient = 0.3\nend\n')
+expect_error lagrange_cg "Linear solver/Type = cg amg cannot solve the saddle-point systems of Contact/Formulation = lagrange.*use Type = direct" \
+  < <(growth; printf 'subsection Contact\n  set Formulation = lagrange\nend\nsubsection Linear solver\n  set Type = cg amg\nend\n')
+expect_error lagrange_gathering "Contact/Formulation = lagrange with Enrichment/Gather tip DoFs = true" \
+  < <(growth; printf 'subsection Contact\n  set Formulation = lagrange\nend\nsubsection Enrichment\n  set Tip enrichment = geometric\n  set Enrichment radius = 0.2\n  set Gather tip DoFs = true\nend\n')
+expect_error lagrange_space "nodes.*for the entry named.*Multiplier space" \
+  < <(growth; printf 'subsection Contact\n  set Formulation = lagrange\n  subsection Lagrange\n    set Multiplier space = nodes\n  end\nend\n')
 # Friction: a negative coefficient; friction on lips that do not touch; a
 # tangential penalty that is not positive; a solver for symmetric systems.
 expect_error friction_negative "Contact/Friction coefficient = -0.1: must be zero \\(frictionless\\) or positive" \

@@ -114,6 +114,72 @@ namespace xcrack
       {
         return {0, ""};
       }
+
+      /**
+       * @name Unknowns of its own
+       *
+       * A contribution may bring unknowns beyond the displacement's (the
+       * Lagrange multipliers of contact on the lips): the system is then
+       * [displacement DoFs, own unknowns], a saddle point. They are numbered
+       * 0 .. n_own_unknowns() - 1 over all ranks; each rank owns the range
+       * owned_own_unknowns() (the ranges of the ranks are disjoint and
+       * cover them all). The simulator asks for them again after each
+       * set-up of the space.
+       */
+      /// @{
+      /// Whether it brings unknowns of its own (known before any space).
+      virtual bool
+      has_own_unknowns() const
+      {
+        return false;
+      }
+
+      /// Build the own unknowns on the current space (collective).
+      virtual void
+      setup_own_unknowns()
+      {}
+
+      virtual unsigned int
+      n_own_unknowns() const
+      {
+        return 0;
+      }
+
+      /// [begin, end) of the own unknowns this rank owns.
+      virtual std::pair<unsigned int, unsigned int>
+      owned_own_unknowns() const
+      {
+        return {0, 0};
+      }
+
+      /// The own unknowns the locally owned @p cell couples to (their
+      /// order is that of assemble_own()'s rows).
+      virtual std::vector<unsigned int>
+      own_unknowns_of(
+        const typename DoFHandler<dim>::active_cell_iterator & /*cell*/) const
+      {
+        return {};
+      }
+
+      /**
+       * Add the cell's share of the rows and columns of its own unknowns:
+       * @p matrix and @p rhs have the cell's DoFs first (@p n_dofs, the
+       * displacement block already assembled) and then its own unknowns
+       * (own_unknowns_of()); only the entries of the own unknowns' rows and
+       * columns are this function's.
+       */
+      virtual void
+      assemble_own(const CellInput<dim> & /*input*/,
+                   const unsigned int /*n_dofs*/,
+                   FullMatrix<double> & /*matrix*/,
+                   Vector<double> & /*rhs*/)
+      {}
+
+      /// After each solve: the values of all own unknowns (on every rank).
+      virtual void
+      set_own_values(const std::vector<double> & /*values*/)
+      {}
+      /// @}
     };
   } // namespace Assembly
 } // namespace xcrack

@@ -37,6 +37,12 @@ namespace xcrack
       bool
       accepts(const MatrixProperty property) const override;
 
+      bool
+      accepts_saddle_point() const override
+      {
+        return true;
+      }
+
       unsigned int
       solve(const System                        &system,
             TrilinosWrappers::MPI::Vector       &x,

@@ -78,6 +78,14 @@ namespace xcrack
       virtual bool
       accepts(const MatrixProperty property) const = 0;
 
+      /// Whether it can solve a saddle point (Lagrange multipliers: rows
+      /// with a zero diagonal block, which AMG cannot smooth).
+      virtual bool
+      accepts_saddle_point() const
+      {
+        return false;
+      }
+
       /**
        * Solve @p system x = @p rhs (x: locally owned entries, its values the
        * initial guess of an iterative solver). Returns the iterations (1 for
