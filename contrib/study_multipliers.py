@@ -175,16 +175,18 @@ def main():
     import matplotlib.pyplot as plt
     figure, axes = plt.subplots(1, len(cases), figsize=(11, 4))
     for axis, case in zip(axes, cases):
-        for (c, space), (points, pressure, dofs) in curves.items():
+        dofs = 0
+        for (c, space), (points, pressure, n) in curves.items():
             if c != case:
                 continue
+            dofs = n
             axis.plot([s for s, _ in points], [p / pressure for _, p in points],
                       ".-", linewidth=0.8, markersize=3,
                       label=f"{space}{' (naive)' if space == 'edges' else ''}")
         axis.axhline(1, color="k", linewidth=0.5)
         axis.set_title(f"{case}, mesh {args.plot_mesh} ({dofs:,} DoFs)")
         axis.set_xlabel("distance from the crack's centre along the lips")
-        axis.set_ylabel("contact pressure / exact")
+        axis.set_ylabel("contact pressure / exact (mean of each cell's lips)")
         axis.legend()
     figure.tight_layout()
     figure.savefig(args.figure, dpi=120)

@@ -15,7 +15,10 @@
 //   meshes: on `vital nodes` the pressure stays within 2 % of the exact one;
 //   on `edges`, the naive space (a multiplier per crossing of the lips with
 //   an edge), it oscillates by more than 10 % (the space is not stable:
-//   doc/verification.md, "Lagrange multipliers").
+//   doc/verification.md, "Lagrange multipliers");
+// - the 30 degree crack with Coulomb friction on its lips: at mu = 0.3 every
+//   lip slips and K_II follows the closed form, at mu = 0.7 every lip sticks
+//   and the uniform stress is exact to the mesh's round-off.
 
 #include <deal.II/base/mpi.h>
 
@@ -43,7 +46,8 @@ xcrack::Statistics
 run(const double       angle,
     const double       shift,
     const std::string &space,
-    const unsigned int meshes)
+    const unsigned int meshes,
+    const double       mu = 0)
 {
   const double       b = angle * M_PI / 180, c = std::cos(b), s = std::sin(b);
   std::ostringstream in;
@@ -61,16 +65,18 @@ run(const double       angle,
      << "subsection Exact solution\n set Type = griffith\n"
      << " set Tip = 0, " << shift << "\n set Tip direction = " << c << ", " << s
      << "\n set Half-length = 1\n set Remote stress = 0, -1, 0\n"
-     << " set Lips = closed\nend\n"
+     << " set Lips = closed\n set Friction coefficient = " << mu << "\nend\n"
      << "subsection Boundary conditions\n"
      << " set Dirichlet = 0: exact | 1: exact | 2: exact | 3: exact\nend\n"
      << "subsection Contact\n set Formulation = lagrange\n"
+     << " set Friction coefficient = " << mu << "\n"
      << " subsection Lagrange\n  set Multiplier space = " << space
      << "\n end\nend\n"
      << "subsection Enrichment\n set Tip enrichment = geometric\n"
      << " set Enrichment radius = 0.15\nend\n"
      << "subsection Fracture parameters\n set Crown radii = 2, 4\n"
-     << " set Reference K = 0; " << -k_scale * s * c << "\nend\n"
+     << " set Reference K = 0; " << -k_scale * c * std::max(0., s - mu * c)
+     << "\nend\n"
      << "subsection Mesh refinement\n set Number of meshes = " << meshes
      << "\nend\n";
   ParameterHandler prm;
@@ -118,6 +124,33 @@ main(int argc, char **argv)
         logfile << std::endl;
       }
   }
+
+  // Coulomb friction: the lips slip as a whole below mu = tan(beta) =
+  // 0.577, with K_II = -p sqrt(pi a) cos(beta) (sin(beta) - mu cos(beta)),
+  // and stick beyond it (K_II = 0, the uniform field exact).
+  for (const double mu : {0.3, 0.7})
+    {
+      const xcrack::Statistics stats = run(30, 0, "vital nodes", 3, mu);
+      const double             k_ii =
+        -k_scale * std::cos(M_PI / 6) *
+        std::max(0., std::sin(M_PI / 6) - mu * std::cos(M_PI / 6));
+      const unsigned int mesh  = 2;
+      double             error = 0;
+      for (const std::string tip : {"1", "2"})
+        error =
+          std::max(error, std::abs(stats.get("K_II_" + tip, mesh) - k_ii));
+      logfile << "30 degrees, mu = " << mu << ", mesh " << mesh << ": "
+              << stats.get("newton_iterations", mesh)
+              << " Newton step(s), every lip closed: "
+              << yes(stats.get("contact_closed", mesh) == 1)
+              << ", slipping: " << stats.get("contact_slipping", mesh)
+              << ", K_II within 0.5 % of p sqrt(pi a) of the closed form: "
+              << yes(error < 0.005 * k_scale);
+      if (mu > 0.5)
+        logfile << ", L2 error below 1e-5: "
+                << yes(stats.get("L2_error", mesh) < 1e-5);
+      logfile << std::endl;
+    }
 
   for (const std::string space : {"vital nodes", "edges"})
     {

@@ -53,13 +53,6 @@ namespace xcrack
                                            "Contact/Formulation",
                                            prm,
                                            simulator);
-      check_input(friction == 0 || formulation->allows_friction(),
-                  "Contact/Formulation = " + name +
-                    " with Friction "
-                    "coefficient = " +
-                    prm.get("Friction coefficient") +
-                    ": this formulation has no friction yet; use "
-                    "Formulation = penalty or augmented lagrangian.");
       formulation->friction = friction;
       return formulation;
     }

@@ -76,6 +76,15 @@ namespace xcrack
 
 
     template <int dim>
+    unsigned int
+    Lagrange<dim>::n_components() const
+    {
+      return (this->friction > 0 ? dim : 1);
+    }
+
+
+
+    template <int dim>
     void
     Lagrange<dim>::setup_own_unknowns()
     {
@@ -87,7 +96,10 @@ namespace xcrack
       gap.assign(n, 0.);
       mass.assign(n, 0.);
       stiffness.assign(n, 0.);
-      active.assign(n, 1);
+      lambda_t.assign(n, {});
+      slip.assign(n, {});
+      direction.assign(n, {});
+      status.assign(n, sticking);
       std::vector<double> coupling(n, 0.);
       cells.clear();
 
@@ -110,11 +122,14 @@ namespace xcrack
           data.psi                  = basis->values;
           data.coupling.reinit(m, n_dofs);
           data.gap_rows.reinit(n_points, n_dofs);
+          data.jumps.reinit(n_points, n_dofs);
           data.mass.assign(m, 0.);
           data.gaps.assign(n_points, 0.);
           data.stiffness = youngs_modulus *
                            std::sqrt(static_cast<double>(dim)) /
                            cell->diameter();
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            data.components.push_back(lips.component(i));
           for (unsigned int q = 0; q < n_points; ++q)
             {
               const double ds = lips.normal_ds(q).norm();
@@ -122,8 +137,11 @@ namespace xcrack
               data.ds.push_back(ds);
               data.points.push_back(lips.point(q));
               for (unsigned int i = 0; i < n_dofs; ++i)
-                data.gap_rows(q, i) =
-                  data.normals[q][lips.component(i)] * lips.jump(i, q);
+                {
+                  data.jumps(q, i) = lips.jump(i, q);
+                  data.gap_rows(q, i) =
+                    data.normals[q][data.components[i]] * data.jumps(q, i);
+                }
               for (unsigned int j = 0; j < m; ++j)
                 {
                   const double w = data.psi[q][j] * ds;
@@ -149,6 +167,73 @@ namespace xcrack
           stiffness[k] = (mass[k] > 0 ? stiffness[k] / mass[k] : 0.);
           coupled[k]   = (mass[k] > 0 && coupling[k] > 0);
         }
+      if (this->friction > 0)
+        make_frames();
+    }
+
+
+
+    template <int dim>
+    void
+    Lagrange<dim>::make_frames()
+    {
+      // The mean normal of each multiplier's lips, over all ranks.
+      const unsigned int  n = space.size();
+      std::vector<double> sums(n * dim, 0.);
+      for (const auto &[id, data] : cells)
+        for (unsigned int q = 0; q < data.points.size(); ++q)
+          for (unsigned int j = 0; j < data.multipliers.size(); ++j)
+            for (unsigned int d = 0; d < dim; ++d)
+              sums[data.multipliers[j] * dim + d] +=
+                data.psi[q][j] * data.ds[q] * data.normals[q][d];
+      Utilities::MPI::sum(sums, this->get_mpi_communicator(), sums);
+      normal.assign(n, Tensor<1, dim>());
+      tangents.assign(n, {});
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            normal[k][d] = sums[k * dim + d];
+          if (normal[k].norm() == 0)
+            normal[k][dim - 1] = 1;
+          normal[k] /= normal[k].norm();
+          if constexpr (dim == 2)
+            tangents[k][0] = Tensor<1, dim>({-normal[k][1], normal[k][0]});
+          else
+            {
+              // The axis least aligned with the normal, made orthogonal.
+              unsigned int axis = 0;
+              for (unsigned int d = 1; d < dim; ++d)
+                if (std::abs(normal[k][d]) < std::abs(normal[k][axis]))
+                  axis = d;
+              Tensor<1, dim> e;
+              e[axis]        = 1;
+              tangents[k][0] = e - (e * normal[k]) * normal[k];
+              tangents[k][0] /= tangents[k][0].norm();
+              tangents[k][1] = cross_product_3d(normal[k], tangents[k][0]);
+            }
+        }
+      // The cells' couplings to the slips in those frames.
+      for (auto &[id, data] : cells)
+        {
+          const unsigned int n_dofs = data.coupling.n();
+          data.tangential.reinit(data.multipliers.size() * (dim - 1), n_dofs);
+          for (unsigned int q = 0; q < data.points.size(); ++q)
+            for (unsigned int j = 0; j < data.multipliers.size(); ++j)
+              for (unsigned int k = 0; k < dim - 1; ++k)
+                {
+                  const Tensor<1, dim> &t = tangents[data.multipliers[j]][k];
+                  const double          w = data.psi[q][j] * data.ds[q];
+                  const double          along_normal = t * data.normals[q];
+                  for (unsigned int i = 0; i < n_dofs; ++i)
+                    {
+                      const unsigned int c = data.components[i];
+                      // t . P_T [[phi_i]], [[phi_i]] = jump e_c.
+                      data.tangential(j * (dim - 1) + k, i) +=
+                        w * data.jumps(q, i) *
+                        (t[c] - along_normal * data.normals[q][c]);
+                    }
+                }
+        }
     }
 
 
@@ -160,25 +245,35 @@ namespace xcrack
       n_changed = 0;
       if (first)
         {
-          // Closed everywhere: the first iterate is zero.
-          active = coupled;
+          // Closed and sticking everywhere: the first iterate is zero.
+          for (unsigned int k = 0; k < status.size(); ++k)
+            status[k] = (coupled[k] ? sticking : opened);
           std::fill(lambda.begin(), lambda.end(), 0.);
+          std::fill(lambda_t.begin(),
+                    lambda_t.end(),
+                    std::array<double, dim - 1>());
           return;
         }
-      // The weighted gaps of the current iterate, and its gap at each lip
-      // point (for the output).
-      std::fill(gap.begin(), gap.end(), 0.);
-      Vector<double> u;
+      // The weighted gaps and slips of the current iterate, and its gap at
+      // each lip point (for the output), over all ranks.
+      const bool          friction = (this->friction > 0);
+      const unsigned int  n        = space.size();
+      std::vector<double> sums(n * (friction ? dim : 1), 0.);
+      Vector<double>      u;
       for (auto &[id, data] : cells)
         {
           u.reinit(data.cell->get_fe().n_dofs_per_cell());
           data.cell->get_dof_values(this->get_solution(), u);
           for (unsigned int j = 0; j < data.multipliers.size(); ++j)
             {
-              double g = 0;
+              const unsigned int k = data.multipliers[j];
               for (unsigned int i = 0; i < u.size(); ++i)
-                g += data.coupling(j, i) * u[i];
-              gap[data.multipliers[j]] += g;
+                sums[friction ? k * dim : k] += data.coupling(j, i) * u[i];
+              if (friction)
+                for (unsigned int c = 0; c < dim - 1; ++c)
+                  for (unsigned int i = 0; i < u.size(); ++i)
+                    sums[k * dim + 1 + c] +=
+                      data.tangential(j * (dim - 1) + c, i) * u[i];
             }
           for (unsigned int q = 0; q < data.points.size(); ++q)
             {
@@ -187,23 +282,67 @@ namespace xcrack
                 data.gaps[q] += data.gap_rows(q, i) * u[i];
             }
         }
-      const MPI_Comm comm = this->get_mpi_communicator();
-      Utilities::MPI::sum(gap, comm, gap);
-      // The active set of the iterate (every rank alike); the changes are
-      // counted by the owner of each multiplier.
-      const auto [begin, end] = space.owned_range();
-      for (unsigned int k = 0; k < lambda.size(); ++k)
+      Utilities::MPI::sum(sums, this->get_mpi_communicator(), sums);
+      for (unsigned int k = 0; k < n; ++k)
         {
-          const char now =
-            (coupled[k] &&
-             lambda[k] - complementarity * stiffness[k] * gap[k] / mass[k] > 0);
-          if (now != active[k] && k >= begin && k < end)
+          gap[k] = sums[friction ? k * dim : k];
+          if (friction)
+            for (unsigned int c = 0; c < dim - 1; ++c)
+              slip[k][c] = sums[k * dim + 1 + c];
+        }
+      update_statuses();
+    }
+
+
+
+    template <int dim>
+    void
+    Lagrange<dim>::update_statuses()
+    {
+      // Every rank alike; the changes are counted by the owner of each
+      // multiplier.
+      const auto [begin, end] = space.owned_range();
+      const double mu         = this->friction;
+      for (unsigned int k = 0; k < status.size(); ++k)
+        {
+          const double c = complementarity * stiffness[k];
+          const double normal_trial =
+            (coupled[k] ? lambda[k] - c * gap[k] / mass[k] : 0.);
+          char                        now = opened;
+          std::array<double, dim - 1> d{};
+          if (normal_trial > 0)
+            {
+              now = sticking;
+              if (mu > 0)
+                {
+                  double norm = 0;
+                  for (unsigned int i = 0; i < dim - 1; ++i)
+                    {
+                      d[i] = lambda_t[k][i] - c * slip[k][i] / mass[k];
+                      norm += d[i] * d[i];
+                    }
+                  norm = std::sqrt(norm);
+                  if (norm > mu * normal_trial)
+                    {
+                      now = slipping;
+                      for (double &x : d)
+                        x /= norm;
+                    }
+                }
+            }
+          // A 2D slip that turns round is a change of status; a 3D slip
+          // direction settles with the residual.
+          const bool changed =
+            (now != status[k] ||
+             (dim == 2 && now == slipping && d[0] * direction[k][0] < 0));
+          if (changed && k >= begin && k < end)
             {
               if (n_changed == 0)
                 first_changed = space.location(k);
               ++n_changed;
             }
-          active[k] = now;
+          status[k]    = now;
+          direction[k] = d;
         }
     }
 
@@ -225,8 +364,13 @@ namespace xcrack
       const typename DoFHandler<dim>::active_cell_iterator &cell) const
     {
       const auto it = cells.find(cell->id());
-      return (it == cells.end() ? std::vector<unsigned int>() :
-                                  it->second.multipliers);
+      if (it == cells.end())
+        return {};
+      std::vector<unsigned int> own;
+      for (const unsigned int k : it->second.multipliers)
+        for (unsigned int c = 0; c < n_components(); ++c)
+          own.push_back(k * n_components() + c);
+      return own;
     }
 
 
@@ -238,20 +382,45 @@ namespace xcrack
                                 FullMatrix<double>             &matrix,
                                 Vector<double> &)
     {
-      const CellData &data = cells.at(input.cell->id());
+      const CellData    &data = cells.at(input.cell->id());
+      const unsigned int nc   = n_components();
       for (unsigned int j = 0; j < data.multipliers.size(); ++j)
         {
-          const unsigned int row = n_dofs + j;
-          if (active[data.multipliers[j]])
-            // The gap held at zero, and the pressure's force on the lips.
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              {
-                matrix(row, i) -= data.coupling(j, i);
-                matrix(i, row) -= data.coupling(j, i);
-              }
-          else
-            // Open: lambda = 0, scaled like the rows of the constraint.
-            matrix(row, row) -= data.mass[j] / data.stiffness;
+          const unsigned int k     = data.multipliers[j];
+          const unsigned int row   = n_dofs + j * nc;
+          const double       scale = data.mass[j] / data.stiffness;
+          if (status[k] == opened)
+            {
+              // lambda = 0, scaled like the rows of the constraints.
+              for (unsigned int c = 0; c < nc; ++c)
+                matrix(row + c, row + c) -= scale;
+              continue;
+            }
+          // The gap held at zero, and the pressure's force on the lips.
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            {
+              matrix(row, i) -= data.coupling(j, i);
+              matrix(i, row) -= data.coupling(j, i);
+            }
+          for (unsigned int c = 0; c < nc - 1; ++c)
+            {
+              // The friction traction's force on the lips, and its row:
+              // sticking, the slip held at zero; slipping, lambda_T = mu
+              // lambda d.
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                {
+                  const double b = data.tangential(j * (dim - 1) + c, i);
+                  matrix(i, row + 1 + c) -= b;
+                  if (status[k] == sticking)
+                    matrix(row + 1 + c, i) -= b;
+                }
+              if (status[k] == slipping)
+                {
+                  matrix(row + 1 + c, row + 1 + c) += scale;
+                  matrix(row + 1 + c, row) -=
+                    this->friction * direction[k][c] * scale;
+                }
+            }
         }
     }
 
@@ -261,8 +430,14 @@ namespace xcrack
     void
     Lagrange<dim>::set_own_values(const std::vector<double> &values)
     {
-      AssertDimension(values.size(), lambda.size());
-      lambda = values;
+      const unsigned int nc = n_components();
+      AssertDimension(values.size(), lambda.size() * nc);
+      for (unsigned int k = 0; k < lambda.size(); ++k)
+        {
+          lambda[k] = values[k * nc];
+          for (unsigned int c = 0; c + 1 < nc; ++c)
+            lambda_t[k][c] = values[k * nc + 1 + c];
+        }
     }
 
 
@@ -283,7 +458,7 @@ namespace xcrack
     unsigned int
     Lagrange<dim>::n_own_unknowns() const
     {
-      return space.size();
+      return space.size() * n_components();
     }
 
 
@@ -292,7 +467,8 @@ namespace xcrack
     std::pair<unsigned int, unsigned int>
     Lagrange<dim>::owned_own_unknowns() const
     {
-      return space.owned_range();
+      const auto [begin, end] = space.owned_range();
+      return {begin * n_components(), end * n_components()};
     }
 
 
@@ -311,12 +487,31 @@ namespace xcrack
 
     template <int dim>
     Tensor<1, dim>
+    Lagrange<dim>::friction_traction(const CellData    &data,
+                                     const unsigned int q) const
+    {
+      Tensor<1, dim> t;
+      if (this->friction == 0)
+        return t;
+      for (unsigned int j = 0; j < data.multipliers.size(); ++j)
+        for (unsigned int c = 0; c < dim - 1; ++c)
+          t += data.psi[q][j] * lambda_t[data.multipliers[j]][c] *
+               tangents[data.multipliers[j]][c];
+      // Its part in the tangent plane of the point.
+      return t - (t * data.normals[q]) * data.normals[q];
+    }
+
+
+
+    template <int dim>
+    Tensor<1, dim>
     Lagrange<dim>::lip_traction(const CellId &cell, const unsigned int q) const
     {
       const auto it = cells.find(cell);
       if (it == cells.end() || q >= it->second.points.size())
         return Tensor<1, dim>();
-      return pressure(it->second, q) * it->second.normals[q];
+      return pressure(it->second, q) * it->second.normals[q] +
+             friction_traction(it->second, q);
     }
 
 
@@ -337,8 +532,12 @@ namespace xcrack
           length += data.ds[q];
           state.pressure += p * data.ds[q];
           state.gap += data.gaps[q] * data.ds[q];
-          state.traction += p * data.normals[q] * data.ds[q];
+          state.traction +=
+            (p * data.normals[q] + friction_traction(data, q)) * data.ds[q];
           state.closed += (p > 0 ? data.ds[q] : 0.);
+          for (unsigned int j = 0; j < data.multipliers.size(); ++j)
+            if (status[data.multipliers[j]] == slipping)
+              state.slipping += data.psi[q][j] * data.ds[q];
         }
       if (length > 0)
         {
@@ -346,6 +545,7 @@ namespace xcrack
           state.gap /= length;
           state.traction /= length;
           state.closed /= length;
+          state.slipping /= length;
         }
       return state;
     }
@@ -377,7 +577,7 @@ namespace xcrack
     std::map<std::string, double>
     Lagrange<dim>::statistics() const
     {
-      double lips = 0, closed = 0;
+      double lips = 0, closed = 0, slipped = 0;
       double low = std::numeric_limits<double>::max(), high = 0;
       for (const auto &[id, data] : cells)
         for (unsigned int q = 0; q < data.points.size(); ++q)
@@ -389,33 +589,40 @@ namespace xcrack
                 closed += data.ds[q];
                 low  = std::min(low, p);
                 high = std::max(high, p);
+                for (unsigned int j = 0; j < data.multipliers.size(); ++j)
+                  if (status[data.multipliers[j]] == slipping)
+                    slipped += data.psi[q][j] * data.ds[q];
               }
           }
-      // The gap held where closed: the weighted gap of each active
+      // The gap held where closed: the weighted gap of each closed
       // multiplier over its mass (zero to round-off at convergence).
       double gap_min = 0;
       for (unsigned int k = 0; k < lambda.size(); ++k)
-        if (active[k] && mass[k] > 0)
+        if (status[k] != opened && mass[k] > 0)
           gap_min = std::min(gap_min, gap[k] / mass[k]);
       const MPI_Comm comm = this->get_mpi_communicator();
       lips                = Utilities::MPI::sum(lips, comm);
       closed              = Utilities::MPI::sum(closed, comm);
+      slipped             = Utilities::MPI::sum(slipped, comm);
       low                 = Utilities::MPI::min(low, comm);
       high                = Utilities::MPI::max(high, comm);
-      return {{"contact_closed", lips > 0 ? closed / lips : 0.},
-              {"contact_pressure_min", closed > 0 ? low : 0.},
-              {"contact_pressure_max", high},
-              {"contact_gap_min", gap_min},
-              {"contact_multipliers", static_cast<double>(lambda.size())}};
+      std::map<std::string, double> values{
+        {"contact_closed", lips > 0 ? closed / lips : 0.},
+        {"contact_pressure_min", closed > 0 ? low : 0.},
+        {"contact_pressure_max", high},
+        {"contact_gap_min", gap_min},
+        {"contact_multipliers", static_cast<double>(lambda.size())}};
+      if (this->friction > 0)
+        values["contact_slipping"] = (closed > 0 ? slipped / closed : 0.);
+      return values;
     }
 
     XCRACK_REGISTER_PLUGIN(Interface,
                            Lagrange,
                            "lagrange",
-                           "the contact pressure as Lagrange multipliers on "
+                           "the contact tractions as Lagrange multipliers on "
                            "a stable space of the lips, which hold the lips "
-                           "exactly (subsection Lagrange; symmetric "
-                           "indefinite systems: Linear solver/Type = "
-                           "direct).")
+                           "exactly (subsection Lagrange; saddle-point "
+                           "systems: Linear solver/Type = direct).")
   } // namespace Contact
 } // namespace xcrack

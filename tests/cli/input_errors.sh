@@ -101,11 +101,9 @@ expect_error augmented_coefficient "Contact/Augmented Lagrangian/Augmentation co
   < <(growth; printf 'subsection Contact\n  set Formulation = augmented lagrangian\n  subsection Augmented Lagrangian\n    set Augmentation coefficient = 0\n  end\nend\n')
 expect_error contact_unknown "mortar.*for the entry named.*Formulation" \
   < <(growth; printf 'subsection Contact\n  set Formulation = mortar\nend\n')
-# Lagrange multipliers: no friction yet, a saddle point that only the direct
-# solver takes, a multiplier space that gathered tip DoFs cannot meet, a
-# space that does not exist.
-expect_error lagrange_friction "Contact/Formulation = lagrange with Friction coefficient = 0.3: this formulation has no friction yet" \
-  < <(growth; printf 'subsection Contact\n  set Formulation = lagrange\n  set Friction coefficient = 0.3\nend\n')
+# Lagrange multipliers: a saddle point that only the direct solver takes, a
+# multiplier space that gathered tip DoFs cannot meet, a space that does not
+# exist.
 expect_error lagrange_cg "Linear solver/Type = cg amg cannot solve the saddle-point systems of Contact/Formulation = lagrange.*use Type = direct" \
   < <(growth; printf 'subsection Contact\n  set Formulation = lagrange\nend\nsubsection Linear solver\n  set Type = cg amg\nend\n')
 expect_error lagrange_gathering "Contact/Formulation = lagrange with Enrichment/Gather tip DoFs = true" \

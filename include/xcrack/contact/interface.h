@@ -113,14 +113,6 @@ namespace xcrack
         return friction == 0;
       }
 
-      /// Whether the formulation can hold friction (create() refuses a
-      /// friction coefficient otherwise).
-      virtual bool
-      allows_friction() const
-      {
-        return true;
-      }
-
       /// Coulomb's mu on the lips (0: frictionless); set by create().
       double friction = 0;
     };
