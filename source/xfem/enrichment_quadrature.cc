@@ -120,6 +120,12 @@ namespace xcrack
     if (!(is_split(cell) || is_tip(cell)))
       return {};
     const auto [lsn, lst] = level_set_values(cell);
+    // lsn = 0 counts as the positive side: lips that lie in a face (a crack
+    // along a row of nodes) belong to the cell on their negative side, and
+    // a tip cell without a negative vertex has none (its neighbour across
+    // the face holds them; both held the piece at the tip before).
+    if (*std::min_element(lsn.begin(), lsn.end()) >= 0)
+      return {};
     // Where the front crosses a 3D cell, four boxes per direction (2D tip
     // cells are split exactly).
     const unsigned int n_points =
