@@ -70,11 +70,13 @@ namespace xcrack
     TrilinosWrappers::MPI::Vector dofs(locally_owned_dofs, mpi_communicator);
     for (const types::global_dof_index i : locally_owned_dofs)
       dofs[i] = distributed[i];
+    dofs.compress(VectorOperation::insert);
     constraints.distribute(dofs);
     solution        = dofs;
     system_solution = distributed;
     for (const types::global_dof_index i : locally_owned_dofs)
       system_solution[i] = dofs[i];
+    system_solution.compress(VectorOperation::insert);
     for (unsigned int c = 0; c < contributions.size(); ++c)
       {
         std::vector<double> values(contributions[c]->n_own_unknowns(), 0.);
