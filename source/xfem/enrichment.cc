@@ -294,15 +294,10 @@ namespace xcrack
   template <int dim>
   std::pair<std::vector<double>, std::vector<double>>
   Enrichment<dim>::level_set_values(
-    const typename Triangulation<dim>::cell_iterator &cell,
-    const bool                                        fitted) const
+    const typename Triangulation<dim>::cell_iterator &cell) const
   {
-    const unsigned int  c   = crack_index(cell);
-    std::vector<double> lsn = vertex_values(cell, c, true);
-    if (!fitted && c < vertex_shift.size() && !vertex_shift[c].empty())
-      for (const unsigned int v : cell->vertex_indices())
-        lsn[v] += vertex_shift[c][cell->vertex_index(v)];
-    return {lsn, vertex_values(cell, c, false)};
+    const unsigned int c = crack_index(cell);
+    return {vertex_values(cell, c, true), vertex_values(cell, c, false)};
   }
 
 

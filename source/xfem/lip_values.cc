@@ -34,8 +34,13 @@ namespace xcrack
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       components[i] = fe.system_to_component_index(i).first;
     jumps.resize(rule.size(), std::vector<double>(fe.n_dofs_per_cell()));
-    const std::vector<double> lsn =
-      enrichment.level_set_values(cell, false).first;
+    // lsn before fit to vertex: the fitted values plus the shift.
+    std::vector<double> lsn    = enrichment.level_set_values(cell).first;
+    const auto         &shifts = enrichment.lsn_shift();
+    const unsigned int  crack  = enrichment.crack_index(cell);
+    if (crack < shifts.size() && !shifts[crack].empty())
+      for (const unsigned int v : cell->vertex_indices())
+        lsn[v] += shifts[crack][cell->vertex_index(v)];
     for (unsigned int q = 0; q < rule.size(); ++q)
       {
         points.push_back(sides.quadrature_point(2 * q));

@@ -288,12 +288,11 @@ namespace xcrack
 
     /**
      * The values (lsn, lst) of @p cell's crack at its vertices, fitted to
-     * vertices: what its rules are built from (owned and ghost cells). With
-     * @p fitted false, lsn as the fields give it, before fit to vertex.
+     * vertices: what its rules are built from (owned and ghost cells).
      */
     std::pair<std::vector<double>, std::vector<double>>
-    level_set_values(const typename Triangulation<dim>::cell_iterator &cell,
-                     const bool fitted = true) const;
+    level_set_values(
+      const typename Triangulation<dim>::cell_iterator &cell) const;
 
     /// Whether @p cell is split by the crack (and has a special rule).
     bool
