@@ -20,14 +20,10 @@ one the scene would be without the contact term.
     /usr/bin/python3 contrib/bench_contact.py [--runs 3] [--scenes 2d 3d]
 """
 import argparse
-import csv
-import os
 import statistics
-import subprocess
 import tempfile
 
-top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-xcrack = os.path.join(top, "build", "release", "xcrack")
+from xcrack_runs import benchmark_prm, run_xcrack
 scenes = {"2d": ("closed_crack_2d", 6), "3d": ("closed_penny_3d", 4)}
 cases = {
     "none": "set Formulation = none",
@@ -54,8 +50,6 @@ order = {
 
 def run(work, scene, case, ranks):
     name, meshes = scenes[scene]
-    out = os.path.join(work, "out")
-    prm = os.path.join(work, "run.prm")
     # Friction's unsymmetric systems and the multipliers' saddle points:
     # MUMPS (CG takes only SPD ones); multipliers without gathered DoFs.
     direct = "mu" in case or "lagrange" in case or "direct" in case
@@ -63,26 +57,13 @@ def run(work, scene, case, ranks):
               if direct else "")
     if case in ungathered.get(scene, []):
         solver += "subsection Enrichment\n  set Gather tip DoFs = false\nend\n"
-    with open(prm, "w") as f:
-        f.write(f"""include {top}/prm/benchmarks/{name}.prm
-set Output directory = {out}
-subsection Contact
+    last = run_xcrack(benchmark_prm(name, work, f"""subsection Contact
   {cases[case]}
 end
 subsection Mesh refinement
   set Number of meshes = {meshes}
 end
-subsection Output
-  set Timing summary = false
-end
-{solver}""")
-    env = dict(os.environ, OPENBLAS_NUM_THREADS="1",
-               OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    command = ([xcrack, prm] if ranks == 1 else
-               ["mpirun", "-np", str(ranks), xcrack, prm])
-    subprocess.run(command, check=True, env=env, stdout=subprocess.DEVNULL)
-    with open(os.path.join(out, "statistics.csv")) as f:
-        last = list(csv.DictReader(f))[-1]
+{solver}"""), work, ranks)[-1]
     phases = sum(float(v) for k, v in last.items()
                  if k.startswith("t_") and v != "")
     return (int(last["dofs"]), int(last["newton_iterations"]),

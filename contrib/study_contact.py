@@ -32,14 +32,12 @@ multipliers too.
     /usr/bin/python3 contrib/study_contact.py --augmented [--sweep-mesh 4]
 """
 import argparse
-import csv
 import math
-import os
 import subprocess
 import tempfile
 
-top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-xcrack = os.path.join(top, "build", "release", "xcrack")
+from xcrack_runs import benchmark_prm, run_xcrack
+
 k_scale = math.sqrt(math.pi)  # p sqrt(pi a), p = a = 1
 
 
@@ -54,8 +52,6 @@ def k_ii_exact(mu):
 
 def run(work, meshes, space, coefficient, mu=None, tangential=1000,
         formulation="penalty"):
-    out = os.path.join(work, "out")
-    prm = os.path.join(work, "run.prm")
     scene = "closed_crack_2d" if mu is None else "closed_crack_friction_2d"
     friction = "" if mu is None else f"""
   set Friction coefficient = {mu}
@@ -82,24 +78,13 @@ end"""
   subsection Lagrange
     set Multiplier space = {space}
   end"""
-    with open(prm, "w") as f:
-        f.write(f"""include {top}/prm/benchmarks/{scene}.prm
-set Output directory = {out}
-subsection Contact
+    return run_xcrack(benchmark_prm(scene, work, f"""subsection Contact
   set Formulation = {formulation}{friction}{springs}
 end{exact}
 subsection Mesh refinement
   set Number of meshes = {meshes}
 end
-subsection Output
-  set Timing summary = false
-end
-""")
-    env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
-    subprocess.run([xcrack, prm], check=True, env=env,
-                   stdout=subprocess.DEVNULL)
-    with open(os.path.join(out, "statistics.csv")) as f:
-        return list(csv.DictReader(f))
+"""), work)
 
 
 def row(r):

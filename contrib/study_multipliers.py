@@ -29,11 +29,9 @@ import csv
 import math
 import os
 import re
-import subprocess
 import tempfile
 
-top = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-xcrack = os.path.join(top, "build", "release", "xcrack")
+from xcrack_runs import benchmark_prm, run_xcrack, top
 k_scale = math.sqrt(math.pi)  # p sqrt(pi a), p = a = 1
 
 cases = {
@@ -71,16 +69,15 @@ end
 
 
 def run(work, case, formulation, space, meshes):
-    out = os.path.join(work, "out_" + re.sub(r"\W+", "_",
-                                             f"{case}_{formulation}_{space}"))
-    prm = os.path.join(work, "run.prm")
+    """Solve @p case; its output directory and rows, fronts, exact K_II and
+    pressure."""
+    work = os.path.join(work, re.sub(r"\W+", "_",
+                                     f"{case}_{formulation}_{space}"))
+    os.makedirs(work, exist_ok=True)
     crack, k_ii, pressure = scene(case)
     section = "Lagrange" if formulation == "lagrange" else "Penalty"
     entry = "Multiplier space" if formulation == "lagrange" else "Pressure space"
-    with open(prm, "w") as f:
-        f.write(f"""include {top}/prm/benchmarks/closed_crack_2d.prm
-set Output directory = {out}
-{crack}
+    rows = run_xcrack(benchmark_prm("closed_crack_2d", work, f"""{crack}
 subsection Contact
   set Formulation = {formulation}
   subsection {section}
@@ -95,14 +92,9 @@ subsection Mesh refinement
 end
 subsection Output
   set Write vtu = true
-  set Timing summary = false
 end
-""")
-    env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
-    subprocess.run([xcrack, prm], check=True, env=env,
-                   stdout=subprocess.DEVNULL)
-    with open(os.path.join(out, "statistics.csv")) as f:
-        rows = list(csv.DictReader(f))
+"""), work)
+    out = os.path.join(work, "out")
     fronts = []
     for mesh in range(len(rows)):
         with open(os.path.join(out, f"front_000.{mesh:02d}.csv")) as f:
