@@ -2,6 +2,11 @@
 # Install, only when missing, the Debian 12 packages xcrack needs to build, test and plot.
 # Idempotent: a second call checks with dpkg and returns at once.
 set -euo pipefail
+case "${1:-}" in
+  -h|--help)
+    sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "${BASH_SOURCE[0]}"
+    exit 0 ;;
+esac
 
 packages=(
   cmake g++ make ccache numdiff
@@ -9,6 +14,7 @@ packages=(
   libdeal.ii-dev          # deal.II 9.4.1 with MPI, p4est, Trilinos, PETSc (+ MUMPS)
   openmpi-bin             # mpirun for the parallel tests and runs
   libopenblas0-pthread    # optimised BLAS: MUMPS is 18x faster than with reference BLAS
+  nlohmann-json3-dev      # the JSON writer of run.json (header only)
   python3 python3-matplotlib python3-numpy
 )
 

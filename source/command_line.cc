@@ -4,6 +4,10 @@
 #include <fstream>
 #include <iterator>
 
+#ifndef XCRACK_VERSION
+#  define XCRACK_VERSION "unknown"
+#endif
+
 namespace xcrack
 {
   std::string
@@ -16,5 +20,13 @@ namespace xcrack
     while (!text.empty() && text.back() == ' ')
       text.pop_back();
     return text;
+  }
+
+
+
+  std::string
+  version()
+  {
+    return XCRACK_VERSION;
   }
 } // namespace xcrack

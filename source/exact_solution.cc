@@ -175,7 +175,7 @@ namespace xcrack
                         Patterns::Selection("parsed|williams|griffith"),
                         "parsed: the expressions of Displacement (no exact "
                         "solution if empty); williams: the crack-tip field "
-                        "of BENCHMARKS.md Case 1; griffith (2D): a centre "
+                        "of doc/benchmarks.md Case 1; griffith (2D): a centre "
                         "crack in an infinite plate under a remote stress "
                         "(Westergaard).");
       prm.declare_entry("Half-length",

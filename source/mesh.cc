@@ -10,6 +10,13 @@
 
 namespace xcrack
 {
+  namespace
+  {
+    /// The unit cube.
+    const std::string default_upper_corner = "1, 1, 1";
+  } // namespace
+
+
   void
   MeshDescription::declare_parameters(ParameterHandler &prm)
   {
@@ -26,7 +33,7 @@ namespace xcrack
                         "Box: comma-separated coordinates of the lower "
                         "corner (dim of them).");
       prm.declare_entry("Upper corner",
-                        "1, 1, 1",
+                        default_upper_corner,
                         Patterns::Anything(),
                         "Box: comma-separated coordinates of the upper "
                         "corner (dim of them).");
@@ -49,10 +56,11 @@ namespace xcrack
                         "GridGenerator::generate_from_name_and_arguments.");
       prm.declare_entry("File name",
                         "",
-                        Patterns::Anything(),
+                        Patterns::FileName(Patterns::FileName::input),
                         "File: the mesh file (Gmsh .msh, or a format GridIn "
                         "knows by its extension). A relative path is taken "
-                        "from the directory the run starts in.");
+                        "from the directory of the parameter file that sets "
+                        "it.");
       prm.declare_entry("Initial global refinement",
                         "0",
                         Patterns::Integer(0, 20),
@@ -86,7 +94,9 @@ namespace xcrack
         std::ifstream in(file_name);
         check_input(static_cast<bool>(in),
                     "Mesh/File name = " + file_name +
-                      ": cannot open this file for reading.");
+                      ": cannot open this file for reading (a relative name "
+                      "is read from the directory of the parameter file "
+                      "that sets it).");
       }
   }
 
@@ -101,8 +111,12 @@ namespace xcrack
       {
         const Point<dim> p1 =
           Point<dim>(parse_vector<dim>(lower_corner, "Mesh/Lower corner"));
-        const Point<dim> p2 =
-          Point<dim>(parse_vector<dim>(upper_corner, "Mesh/Upper corner"));
+        // (The default, the unit cube, serves in 2D as the unit square.)
+        const Point<dim> p2 = Point<dim>(
+          parse_vector<dim>(dim == 2 && upper_corner == default_upper_corner ?
+                              "1, 1" :
+                              upper_corner,
+                            "Mesh/Upper corner"));
         for (unsigned int d = 0; d < dim; ++d)
           check_input(p1[d] < p2[d],
                       "Mesh/Lower corner and Mesh/Upper corner: coordinate " +

@@ -10,11 +10,17 @@
 #include <xcrack/parameters.h>
 #include <xcrack/simulator.h>
 
+#include <algorithm>
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
+#include <regex>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -130,6 +136,61 @@ namespace xcrack
 
 
 
+  void
+  print_parameters(const ParameterHandler             &prm,
+                   std::ostream                       &out,
+                   const ParameterHandler::OutputStyle style)
+  {
+    std::ostringstream text;
+    prm.print_parameters(text, style);
+    const std::regex repeated("Crack ([2-9]|[1-9][0-9]+)");
+    if (style == ParameterHandler::JSON)
+      {
+        boost::property_tree::ptree tree;
+        std::istringstream          in(text.str());
+        boost::property_tree::read_json(in, tree);
+        const boost::property_tree::ptree::path_type cracks("Cracks", '\0');
+        if (auto section = tree.get_child_optional(cracks))
+          for (auto it = section->begin(); it != section->end();)
+            it = (std::regex_match(it->first, repeated) ? section->erase(it) :
+                                                          std::next(it));
+        boost::property_tree::write_json(out, tree);
+        return;
+      }
+    // PRM: drop the blocks `subsection Crack <n>` of n >= 2, and say once
+    // that they repeat Crack 1.
+    std::istringstream in(text.str());
+    std::string        line;
+    unsigned int       skipping = 0;
+    bool               noted    = false;
+    while (std::getline(in, line))
+      {
+        const std::string statement = Utilities::trim(line);
+        if (skipping > 0)
+          {
+            if (statement.rfind("subsection ", 0) == 0)
+              ++skipping;
+            else if (statement == "end")
+              --skipping;
+            continue;
+          }
+        if (statement.rfind("subsection ", 0) == 0 &&
+            std::regex_match(Utilities::trim(statement.substr(11)), repeated))
+          {
+            skipping = 1;
+            if (!noted)
+              out << line.substr(0, line.find("subsection"))
+                  << "# subsection Crack 2, Crack 3, ...: the entries of "
+                     "Crack 1, one subsection per crack\n";
+            noted = true;
+            continue;
+          }
+        out << line << '\n';
+      }
+  }
+
+
+
   std::string
   message_of(const std::exception &e)
   {
@@ -146,24 +207,197 @@ namespace xcrack
 
   namespace
   {
+    namespace fs = std::filesystem;
+
+    /// Where a line of an expanded parameter file comes from.
+    struct Origin
+    {
+      /// The file as the user named it (on the command line, or the path
+      /// an include resolved to).
+      std::string  file;
+      unsigned int line = 0;
+
+      std::string
+      text() const
+      {
+        return "'" + file + "', line " + std::to_string(line);
+      }
+    };
+
+    /// A parameter file with its includes put in place: every line with
+    /// where it comes from.
+    struct ExpandedFile
+    {
+      std::vector<std::string> lines;
+      std::vector<Origin>      origins;
+    };
+
     /**
-     * ParameterHandler keeps the last of two `set` lines of one entry
-     * without a word; a repeated entry is most often an edit that missed
-     * the earlier line, so say which value wins (rank 0, on stderr).
+     * The paths ("Mesh/File name") of the entries of @p prm declared with
+     * Patterns::FileName: the names a parameter file resolves relative to
+     * its own directory.
+     */
+    std::set<std::string>
+    file_name_entries(const ParameterHandler &prm)
+    {
+      std::ostringstream text;
+      prm.print_parameters(text, ParameterHandler::JSON);
+      boost::property_tree::ptree tree;
+      std::istringstream          in(text.str());
+      boost::property_tree::read_json(in, tree);
+      std::set<std::string> names;
+      const std::function<void(const boost::property_tree::ptree &,
+                               const std::string &)>
+        walk = [&](const boost::property_tree::ptree &node,
+                   const std::string                 &path) {
+          for (const auto &[key, child] : node)
+            {
+              const auto pattern = child.get_child_optional(
+                boost::property_tree::ptree::path_type("pattern_description",
+                                                       '\0'));
+              if (pattern)
+                {
+                  if (pattern->data().rfind("[FileName", 0) == 0)
+                    names.insert(path + key);
+                }
+              else
+                walk(child, path + key + "/");
+            }
+        };
+      walk(tree, "");
+      return names;
+    }
+
+    /// @p line without its comment, trimmed.
+    std::string
+    statement(const std::string &line)
+    {
+      return Utilities::trim(line.substr(0, line.find('#')));
+    }
+
+    /// The file @p name (as an include or an entry gives it) relative to
+    /// the directory of the parameter file @p from.
+    fs::path
+    relative_to(const std::string &name, const std::string &from)
+    {
+      const fs::path path(name);
+      if (path.is_absolute())
+        return path;
+      return (fs::absolute(from).parent_path() / path).lexically_normal();
+    }
+
+    /**
+     * Append @p filename, its includes put in place, to @p expanded. An
+     * include names a file relative to the directory of the file that holds
+     * it, and so does every entry in @p file_entries: their relative values
+     * become absolute, so that a scene runs from any directory and a
+     * resumed run finds them again. @p sections is the subsection path at
+     * the include; @p chain the files being included, to name a circle.
      */
     void
-    warn_about_repeated_entries(const std::string &text,
-                                const std::string &filename)
+    expand(const std::string              &filename,
+           const std::set<std::string>    &file_entries,
+           std::vector<std::string>       &sections,
+           std::vector<std::string>       &chain,
+           const std::vector<std::string> &shown_chain,
+           ExpandedFile                   &expanded)
+    {
+      std::error_code error;
+      const fs::path  here = fs::weakly_canonical(filename, error);
+      for (const std::string &link : chain)
+        if (fs::weakly_canonical(link, error) == here)
+          {
+            std::string words;
+            for (unsigned int k = 0; k + 1 < shown_chain.size(); ++k)
+              words += "'" + shown_chain[k] + "' includes ";
+            throw InputError("Parameter file '" + shown_chain.front() +
+                             "': includes run in a circle: " + words + "'" +
+                             shown_chain.back() + "'.");
+          }
+      std::ifstream in(filename);
+      chain.push_back(filename);
+      std::string line;
+      for (unsigned int number = 1; std::getline(in, line); ++number)
+        {
+          const Origin      origin{shown_chain.back(), number};
+          const std::string text = statement(line);
+          const bool        include =
+            (text.rfind("include", 0) == 0 || text.rfind("INCLUDE", 0) == 0) &&
+            text.size() > 7 &&
+            std::isspace(static_cast<unsigned char>(text[7]));
+          if (include)
+            {
+              const std::string name = Utilities::trim(text.substr(7));
+              const fs::path    path = relative_to(name, filename);
+              std::ifstream     test(path);
+              if (!test || fs::is_directory(path))
+                {
+                  std::string message = "Parameter file " + origin.text() +
+                                        ": cannot read the included file '" +
+                                        name + "' (looked for " +
+                                        path.string() +
+                                        ": an include names "
+                                        "a file relative to the directory of "
+                                        "the file that holds it).";
+                  if (!fs::path(name).is_absolute() && fs::exists(name))
+                    message += " A file '" + name +
+                               "' exists relative to "
+                               "the working directory: write its path "
+                               "relative to the parameter file, or absolute.";
+                  throw InputError(message);
+                }
+              std::vector<std::string> shown = shown_chain;
+              shown.push_back(name);
+              // (The included file's subsections nest in the current one.)
+              expand(
+                path.string(), file_entries, sections, chain, shown, expanded);
+              // The include line itself stays, as a comment.
+              expanded.lines.push_back("# " + text);
+              expanded.origins.push_back(origin);
+              continue;
+            }
+          std::string rewritten = line;
+          if (text.rfind("subsection ", 0) == 0)
+            sections.push_back(Utilities::trim(text.substr(11)));
+          else if (text == "end" && !sections.empty())
+            sections.pop_back();
+          else if (text.rfind("set ", 0) == 0 &&
+                   text.find('=') != std::string::npos)
+            {
+              const std::string::size_type equal = text.find('=');
+              std::string                  key;
+              for (const std::string &section : sections)
+                key += section + "/";
+              key += Utilities::trim(text.substr(4, equal - 4));
+              const std::string value = Utilities::trim(text.substr(equal + 1));
+              if (file_entries.count(key) && !value.empty())
+                rewritten = line.substr(0, line.find("set ")) + "set " +
+                            Utilities::trim(text.substr(4, equal - 4)) + " = " +
+                            relative_to(value, filename).string();
+            }
+          expanded.lines.push_back(rewritten);
+          expanded.origins.push_back(origin);
+        }
+      chain.pop_back();
+    }
+
+    /**
+     * ParameterHandler keeps the last of two `set` lines of one entry
+     * without a word; a repeated entry in one file is most often an edit
+     * that missed the earlier line, so say which value wins (rank 0, on
+     * stderr). An entry that overrides one of an included file is what an
+     * include is for: no warning.
+     */
+    void
+    warn_about_repeated_entries(const ExpandedFile &expanded)
     {
       if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
         return;
-      std::vector<std::string>            path;
-      std::map<std::string, unsigned int> first_line;
-      std::istringstream                  in(text);
-      std::string                         line;
-      for (unsigned int number = 1; std::getline(in, line); ++number)
+      std::vector<std::string>                                    path;
+      std::map<std::pair<std::string, std::string>, unsigned int> first;
+      for (unsigned int i = 0; i < expanded.lines.size(); ++i)
         {
-          line = Utilities::trim(line.substr(0, line.find('#')));
+          const std::string line = statement(expanded.lines[i]);
           if (line.rfind("subsection ", 0) == 0)
             path.push_back(Utilities::trim(line.substr(11)));
           else if (line == "end" && !path.empty())
@@ -175,53 +409,36 @@ namespace xcrack
               for (const std::string &section : path)
                 key += section + "/";
               key += Utilities::trim(line.substr(4, equal - 4));
-              const auto [it, inserted] = first_line.emplace(key, number);
+              const Origin &here = expanded.origins[i];
+              const auto [it, inserted] =
+                first.emplace(std::make_pair(here.file, key), here.line);
               if (!inserted)
-                std::cerr << "Warning: " << filename << ": " << key
-                          << " is set on lines " << it->second << " and "
-                          << number << "; the value on line " << number
-                          << " is used." << std::endl;
+                {
+                  std::cerr << "Warning: " << here.file << ": " << key
+                            << " is set on lines " << it->second << " and "
+                            << here.line << "; the value on line " << here.line
+                            << " is used." << std::endl;
+                  it->second = here.line;
+                }
             }
         }
     }
 
-    /**
-     * ParameterHandler follows `include` lines (relative to the working
-     * directory) without a guard: a file that includes itself, directly or
-     * through others, recurses until the stack overflows. Follow the
-     * chain first and name the cycle. Files that cannot be read are left
-     * to ParameterHandler's message.
-     */
-    void
-    check_include_cycles(const std::string        &filename,
-                         std::vector<std::string> &chain)
+    /// @p message (of ParameterHandler, about the expanded text) with its
+    /// "Line <n> of file <f>" put back where the line comes from.
+    std::string
+    locate(const std::string &message, const ExpandedFile &expanded)
     {
-      std::error_code             error;
-      const std::filesystem::path here =
-        std::filesystem::weakly_canonical(filename, error);
-      for (const std::string &link : chain)
-        if (std::filesystem::weakly_canonical(link, error) == here)
-          {
-            std::string words;
-            for (const std::string &name : chain)
-              words += "'" + name + "' includes ";
-            throw InputError("Parameter file '" + chain.front() +
-                             "': includes run in a circle: " + words + "'" +
-                             filename + "'.");
-          }
-      std::ifstream in(filename);
-      if (!in)
-        return;
-      chain.push_back(filename);
-      std::string line;
-      while (std::getline(in, line))
-        {
-          line = Utilities::trim(line.substr(0, line.find('#')));
-          if (line.rfind("include", 0) == 0 && line.size() > 7 &&
-              std::isspace(static_cast<unsigned char>(line[7])))
-            check_include_cycles(Utilities::trim(line.substr(7)), chain);
-        }
-      chain.pop_back();
+      static const std::regex where("Line <([0-9]+)> of file <[^>]*>");
+      std::smatch             match;
+      if (!std::regex_search(message, match, where))
+        return message;
+      const unsigned long n = std::stoul(match[1].str());
+      if (n == 0 || n > expanded.origins.size())
+        return message;
+      const Origin &origin = expanded.origins[n - 1];
+      return match.prefix().str() + "Line <" + std::to_string(origin.line) +
+             "> of file <" + origin.file + ">" + match.suffix().str();
     }
   } // namespace
 
@@ -236,24 +453,83 @@ namespace xcrack
                   "xcrack --resume DIRECTORY).");
     std::ifstream in(filename);
     check_input(static_cast<bool>(in),
-                "Cannot open the parameter file '" + filename + "'.");
+                "Cannot open the parameter file '" + filename +
+                  "' (looked for " +
+                  fs::absolute(filename).lexically_normal().string() + ").");
     const std::string text((std::istreambuf_iterator<char>(in)),
                            std::istreambuf_iterator<char>());
     check_input(text.find("set ") != std::string::npos,
                 "The parameter file '" + filename +
                   "' sets no entry (it is empty or holds only comments).");
-    warn_about_repeated_entries(text, filename);
-    std::vector<std::string> chain;
-    check_include_cycles(filename, chain);
+    ExpandedFile             expanded;
+    std::vector<std::string> sections, chain;
+    expand(
+      filename, file_name_entries(prm), sections, chain, {filename}, expanded);
+    warn_about_repeated_entries(expanded);
+    std::string all;
+    for (const std::string &line : expanded.lines)
+      all += line + '\n';
     try
       {
-        std::istringstream stream(text);
+        std::istringstream stream(all);
         prm.parse_input(stream, filename);
       }
     catch (const std::exception &e)
       {
-        throw InputError("Parameter file '" + filename + "': " + message_of(e));
+        throw InputError("Parameter file '" + filename +
+                         "': " + locate(message_of(e), expanded));
       }
+  }
+
+
+
+  void
+  set_from_command_line(ParameterHandler &prm, const std::string &assignment)
+  {
+    const std::string            where = "-s '" + assignment + "'";
+    const std::string::size_type equal = assignment.find('=');
+    check_input(equal != std::string::npos,
+                where + ": not of the form 'Subsection/Entry=value'.");
+    const std::string path  = Utilities::trim(assignment.substr(0, equal));
+    std::string       value = Utilities::trim(assignment.substr(equal + 1));
+    std::vector<std::string> parts = Utilities::split_string_list(path, '/');
+    check_input(!path.empty() && !parts.empty() &&
+                  std::find(parts.begin(), parts.end(), "") == parts.end(),
+                where + ": names no entry.");
+    // A file named on the command line is relative to the working
+    // directory.
+    if (file_name_entries(prm).count(path) && !value.empty())
+      value = fs::absolute(value).lexically_normal().string();
+    unsigned int depth = 0;
+    try
+      {
+        for (; depth + 1 < parts.size(); ++depth)
+          {
+            // (enter_subsection() would declare a subsection that does not
+            // exist.)
+            check_input(prm.subsection_path_exists({parts[depth]}),
+                        where + ": there is no subsection '" + parts[depth] +
+                          "'" +
+                          (depth > 0 ? " in '" + parts[depth - 1] + "'" : "") +
+                          " (xcrack --print-parameters lists them).");
+            prm.enter_subsection(parts[depth]);
+          }
+        prm.set(parts.back(), value);
+      }
+    catch (const InputError &)
+      {
+        for (; depth > 0; --depth)
+          prm.leave_subsection();
+        throw;
+      }
+    catch (const std::exception &e)
+      {
+        for (; depth > 0; --depth)
+          prm.leave_subsection();
+        throw InputError(where + ": " + message_of(e));
+      }
+    for (; depth > 0; --depth)
+      prm.leave_subsection();
   }
 
 

@@ -29,15 +29,12 @@ namespace xcrack
   std::vector<double>
   parse_numbers(const std::string &text,
                 const unsigned int n,
-                const std::string &entry,
-                const bool         extra_allowed)
+                const std::string &entry)
   {
     const std::vector<std::string> parts = split_and_trim(text, ',');
-    check_input(parts.size() == n || (extra_allowed && parts.size() > n),
+    check_input(parts.size() == n,
                 entry + " = '" + text + "': expected " + std::to_string(n) +
                   " comma-separated numbers.");
-    // Extra components (a 3D default read in 2D) are dropped, but they must
-    // still be numbers: '-2, 0, abc' is a typo, not a 2D point.
     std::vector<double> values;
     for (unsigned int i = 0; i < parts.size(); ++i)
       try
@@ -49,7 +46,6 @@ namespace xcrack
           throw InputError(entry + " = '" + text + "': '" + parts[i] +
                            "' is not a number.");
         }
-    values.resize(n);
     return values;
   }
 
@@ -59,8 +55,19 @@ namespace xcrack
   Tensor<1, dim>
   parse_vector(const std::string &text, const std::string &entry)
   {
-    const std::vector<double> values = parse_numbers(text, dim, entry, true);
-    Tensor<1, dim>            t;
+    // In 2D a third coordinate is dropped only if it is zero (a default
+    // written for 3D); else the point is not where the user meant it.
+    const bool three_in_2d =
+      (dim == 2 && split_and_trim(text, ',').size() == 3);
+    const std::vector<double> values =
+      parse_numbers(text, three_in_2d ? 3 : dim, entry);
+    if (three_in_2d)
+      check_input(values[2] == 0,
+                  entry + " = '" + text +
+                    "': three coordinates in a 2D scene; give x, y (the "
+                    "third, " +
+                    Utilities::to_string(values[2]) + ", would be ignored).");
+    Tensor<1, dim> t;
     for (unsigned int d = 0; d < dim; ++d)
       t[d] = values[d];
     return t;

@@ -10,7 +10,7 @@ namespace xcrack
   {
     template <int dim>
     void
-    run_in(ParameterHandler &prm, const std::string &resume_directory)
+    run_in(ParameterHandler &prm, const RunOptions &options)
     {
       // Construction reads and checks every input: whatever fails there
       // (a value ParameterHandler cannot convert, say 1e-400) is the
@@ -20,12 +20,16 @@ namespace xcrack
         {
           simulator = std::make_unique<Simulator<dim>>(prm,
                                                        MPI_COMM_WORLD,
-                                                       resume_directory);
+                                                       options.resume_directory,
+                                                       options.check_only);
         }
       catch (const ExceptionBase &e)
         {
           throw InputError(message_of(e));
         }
+      if (options.check_only)
+        return;
+      simulator->record_overrides(options.overrides);
       simulator->run();
     }
   } // namespace
@@ -33,11 +37,11 @@ namespace xcrack
 
 
   void
-  run(ParameterHandler &prm, const std::string &resume_directory)
+  run(ParameterHandler &prm, const RunOptions &options)
   {
     if (prm.get_integer("Dimension") == 2)
-      run_in<2>(prm, resume_directory);
+      run_in<2>(prm, options);
     else
-      run_in<3>(prm, resume_directory);
+      run_in<3>(prm, options);
   }
 } // namespace xcrack

@@ -8,12 +8,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
-
-#ifndef XCRACK_VERSION
-#  define XCRACK_VERSION "unknown"
-#endif
 
 namespace xcrack
 {
@@ -43,22 +40,6 @@ namespace xcrack
 
 
 
-    /// @p text as a JSON string.
-    std::string
-    quoted(const std::string &text)
-    {
-      std::string result = "\"";
-      for (const char c : text)
-        {
-          if (c == '"' || c == '\\')
-            result += '\\';
-          if (c == '\n')
-            result += "\\n";
-          else if (static_cast<unsigned char>(c) >= 0x20)
-            result += c;
-        }
-      return result + "\"";
-    }
   } // namespace
 
 
@@ -185,20 +166,69 @@ namespace xcrack
 
 
   void
+  RunRecord::set_overrides(const std::vector<std::string> &assignments)
+  {
+    overrides = assignments;
+  }
+
+
+
+  void
+  RunRecord::set_cycles(const double total)
+  {
+    cycles = total;
+  }
+
+
+
+  void
+  RunRecord::set_unreliable(const std::vector<std::string> &solves,
+                            const unsigned long long        n_points,
+                            const std::vector<std::string> &reasons,
+                            const double                    n_cycles)
+  {
+    unreliable_solves  = solves;
+    unreliable_points  = n_points;
+    unreliable_reasons = reasons;
+    unreliable_cycles  = n_cycles;
+    if (root)
+      write();
+  }
+
+
+
+  void
   RunRecord::write() const
   {
-    write_file(directory + "/run.json", [this](std::ostream &out) {
-      out << "{\n  \"status\": " << quoted(status)
-          << ",\n  \"reason\": " << quoted(reason)
-          << ",\n  \"start\": " << quoted(start_time)
-          << ",\n  \"end\": " << quoted(end_time)
-          << ",\n  \"resumed\": " << (resumed ? "true" : "false")
-          << ",\n  \"version\": " << quoted(XCRACK_VERSION)
-          << ",\n  \"command\": " << quoted(command_line)
-          << ",\n  \"files\": [";
-      for (unsigned int i = 0; i < files.size(); ++i)
-        out << (i > 0 ? ", " : "") << quoted(files[i]);
-      out << "]\n}\n";
-    });
+    nlohmann::ordered_json record;
+    record["status"]  = status;
+    record["reason"]  = reason;
+    record["start"]   = start_time;
+    record["end"]     = end_time;
+    record["resumed"] = resumed;
+    record["version"] = xcrack::version();
+    record["command"] = command_line;
+    if (!overrides.empty())
+      record["overrides"] = overrides;
+    if (cycles)
+      record["cycles"] = *cycles;
+    // What the run cannot vouch for: the solves with front points whose K
+    // is flagged (their keys, as the files name them), and the cycles that
+    // rest on those K's.
+    if (!unreliable_solves.empty())
+      {
+        nlohmann::ordered_json &flagged = record["unreliable"];
+        flagged["solves"]               = unreliable_solves;
+        flagged["front_points"]         = unreliable_points;
+        flagged["reasons"]              = unreliable_reasons;
+        if (cycles)
+          flagged["cycles"] = unreliable_cycles;
+      }
+    record["files"] = files;
+    // (Invalid UTF-8 in a path or a message is replaced, not thrown.)
+    const std::string text =
+      record.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+    write_file(directory + "/run.json",
+               [&](std::ostream &out) { out << text << '\n'; });
   }
 } // namespace xcrack

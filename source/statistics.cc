@@ -1,3 +1,5 @@
+#include <deal.II/base/exceptions.h>
+
 #include <xcrack/input_error.h>
 #include <xcrack/output_file.h>
 #include <xcrack/statistics.h>
@@ -30,7 +32,7 @@ namespace xcrack
       start_row();
     if (std::find(columns.begin(), columns.end(), column) == columns.end())
       columns.push_back(column);
-    rows.back()[column] = {value, false};
+    rows.back()[column] = {value, false, {}};
   }
 
 
@@ -45,6 +47,20 @@ namespace xcrack
 
 
 
+  void
+  Statistics::add_text(const std::string &column, const std::string &text)
+  {
+    Assert(text.find_first_of(",\n\"") == std::string::npos,
+           dealii::ExcMessage("A CSV cell cannot hold '" + text + "'."));
+    // (An empty text leaves the cell empty.)
+    if (text.empty())
+      return;
+    add_value(column, 0.);
+    rows.back()[column].text = text;
+  }
+
+
+
   double
   Statistics::get(const std::string &column, const unsigned int row) const
   {
@@ -53,6 +69,17 @@ namespace xcrack
     const auto it = rows[row].find(column);
     return (it == rows[row].end() ? std::numeric_limits<double>::quiet_NaN() :
                                     it->second.value);
+  }
+
+
+
+  std::string
+  Statistics::text(const std::string &column, const unsigned int row) const
+  {
+    if (row >= rows.size())
+      throw std::out_of_range("Statistics: no row " + std::to_string(row));
+    const auto it = rows[row].find(column);
+    return (it == rows[row].end() ? std::string() : it->second.text);
   }
 
 
@@ -81,7 +108,9 @@ namespace xcrack
               const auto it = row.find(columns[c]);
               if (it == row.end())
                 continue;
-              if (it->second.is_integer)
+              if (!it->second.text.empty())
+                out << it->second.text;
+              else if (it->second.is_integer)
                 out << static_cast<long long>(it->second.value);
               else
                 out << std::setprecision(10) << it->second.value;

@@ -1,6 +1,6 @@
 // Requirement: the analytic crack shapes give exact signed distances (lsn to
 // the crack plane, lst to the front within it), their front points lie on
-// lsn = lst = 0, and their front frames follow BENCHMARKS.md: unit vectors,
+// lsn = lst = 0, and their front frames follow doc/benchmarks.md: unit vectors,
 // e1 in the plane pointing ahead, e2 the normal, e3 = e1 x e2 (for a penny
 // in z = 0 with u = x: e3 = (sin phi, -cos phi, 0), as in Case 5), and
 // fronts run along e3 (the half plane with normal z and e1 = x from y = 1 to

@@ -4,7 +4,7 @@
 // - a half-plane crack meshed beyond the body (quadrilaterals, Gmsh 2.2):
 //   lsn and lst equal the analytic ones to round-off inside the body, the
 //   edges outside or on the body's surface are mouths, the front is the
-//   straight line inside, its frame that of BENCHMARKS.md;
+//   straight line inside, its frame that of doc/benchmarks.md;
 // - a penny triangulated with 64 sectors (Gmsh 4.1, and the same mesh as
 //   legacy VTK): lsn exact (planar) and lst within the chord error
 //   a (1 - cos(pi/64)) of the circle's; a closed front of 64 edges;

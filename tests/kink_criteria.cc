@@ -1,4 +1,4 @@
-// Requirement: the three kink criteria give the angles of BENCHMARKS.md
+// Requirement: the three kink criteria give the angles of doc/benchmarks.md
 // Case 10 on exact K data within 1e-4 degrees (the issue asks for 0.1
 // degrees): the maximum hoop stress in closed form and its stationarity
 // K_I sin + K_II (3 cos - 1) = 0, the maximum of Hussain, Pu and

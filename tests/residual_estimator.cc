@@ -8,7 +8,7 @@
 //   is two lips there, not a jump; 2D with the crack through no node and
 //   along a row of nodes, 3D, each also on meshes the estimator refined
 //   (hanging nodes on cut faces);
-// - on BENCHMARKS.md Case 1 with topological enrichment (the exact
+// - on doc/benchmarks.md Case 1 with topological enrichment (the exact
 //   Williams field on the boundary), the largest indicator lies at the
 //   tip and the cells along the lips away from it (|x| > 0.4) hold
 //   indicators well below it, whereas deal.II's Kelly indicator, which

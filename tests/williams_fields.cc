@@ -1,5 +1,5 @@
 // Requirement: the Williams crack-tip fields reproduce the test values of
-// BENCHMARKS.md Case 1 (displacements, stresses, Dirichlet data at the
+// doc/benchmarks.md Case 1 (displacements, stresses, Dirichlet data at the
 // corners of [-1,1]^2) to the printed digits; their analytic gradient
 // matches finite differences and, through Hooke's law, the stress formulas;
 // the lips are traction free; a rotated and shifted tip frame gives the same

@@ -9,6 +9,11 @@ namespace xcrack
   /// spaces: what run.json records and what a directory lock names.
   std::string
   command_line();
+
+  /// xcrack's version: the commit the build was configured from (`git
+  /// describe`), `-dirty` if it had changes.
+  std::string
+  version();
 } // namespace xcrack
 
 #endif

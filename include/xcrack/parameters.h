@@ -41,12 +41,39 @@ namespace xcrack
   declare_all_parameters(ParameterHandler &prm);
 
   /**
+   * Every entry of @p prm with its default and documentation, as
+   * ParameterHandler prints them in @p style (PRM or JSON), but the
+   * subsections `Cracks/Crack 2`, `Crack 3`, ...: they repeat `Crack 1`,
+   * which says so (`xcrack --print-parameters`).
+   */
+  void
+  print_parameters(const ParameterHandler             &prm,
+                   std::ostream                       &out,
+                   const ParameterHandler::OutputStyle style);
+
+  /**
    * Read @p filename into @p prm. Unknown entries, values that do not match
    * their pattern, unbalanced subsections and unreadable files become an
    * InputError whose message names the entry and the line of the file.
+   * An `include` and an entry declared with Patterns::FileName name a file
+   * relative to the directory of the parameter file that holds them, as
+   * MOOSE's input files do: a scene runs from any directory. (`Output
+   * directory` stays relative to the working directory: results go where
+   * the run is started.)
    */
   void
   read_parameter_file(ParameterHandler &prm, const std::string &filename);
+
+  /**
+   * Set one entry from the command line (`xcrack -s
+   * "Propagation/Maximum advance=0.002" scene.prm`): @p assignment is the
+   * entry's path, subsections separated by '/', '=' and the value. A
+   * relative file name is taken from the working directory. An entry or
+   * a subsection that does not exist, or a value that does not match,
+   * is an InputError naming the assignment.
+   */
+  void
+  set_from_command_line(ParameterHandler &prm, const std::string &assignment);
 
   /// Same as read_parameter_file() for a file's content in memory (tests).
   void

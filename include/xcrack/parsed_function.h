@@ -62,17 +62,18 @@ namespace xcrack
 
   /**
    * The @p n comma-separated numbers of the parameter @p entry whose value
-   * is @p text; InputError (naming the entry) otherwise. With
-   * @p extra_allowed, further numbers are ignored: a point or vector written
-   * with three coordinates then serves in 2D too.
+   * is @p text; InputError (naming the entry) otherwise.
    */
   std::vector<double>
   parse_numbers(const std::string &text,
                 const unsigned int n,
-                const std::string &entry,
-                const bool         extra_allowed = false);
+                const std::string &entry);
 
-  /// A point or vector of dim coordinates (further ones ignored).
+  /**
+   * A point or vector of dim coordinates. In 2D a third coordinate is
+   * accepted only if it is zero (a default written for 3D): a point with
+   * z = 0.5 in a 2D scene is an InputError, not a silently moved point.
+   */
   template <int dim>
   Tensor<1, dim>
   parse_vector(const std::string &text, const std::string &entry);

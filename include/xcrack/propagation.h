@@ -48,7 +48,7 @@ namespace xcrack
    * The cycles between two steps are integrated along the path of the
    * fastest point with K_eq^2 interpolated linearly in the advance between
    * the two solves (5-point Gauss-Legendre): exact when K grows like the
-   * square root of the crack size (Griffith and penny cracks, BENCHMARKS.md
+   * square root of the crack size (Griffith and penny cracks, doc/benchmarks.md
    * Case 9), second order in the advance otherwise. The plain cycle jump
    * Delta a / (da/dN) is first order.
    */

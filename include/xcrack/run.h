@@ -4,17 +4,30 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
+#include <vector>
 
 namespace xcrack
 {
+  /// How a run was asked for on the command line.
+  struct RunOptions
+  {
+    /// Continue the run checkpointed in this output directory (`--resume`).
+    std::string resume_directory;
+    /// The entries set on the command line (`-s`), as given: run.json
+    /// records them.
+    std::vector<std::string> overrides;
+    /// Only check the input (`--check`): build the scene, run every check
+    /// the constructor runs, and write no result.
+    bool check_only = false;
+  };
+
   /**
    * Run the scene of an already read parameter file: pick the dimension,
    * check every input, then solve and write results. Input errors are
-   * thrown as InputError before anything is written. With a non-empty
-   * @p resume_directory, continue the run checkpointed there.
+   * thrown as InputError before anything is written.
    */
   void
-  run(dealii::ParameterHandler &prm, const std::string &resume_directory = "");
+  run(dealii::ParameterHandler &prm, const RunOptions &options = {});
 
   /**
    * The checkpoint of the propagation run whose output directory is

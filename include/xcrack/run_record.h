@@ -3,6 +3,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,8 +15,9 @@ namespace xcrack
    * `run.json` in the output directory: what the run is and how far it
    * got, for every reader, a person or a script (contrib/plot_*.py): its
    * status (`running`, then `completed` or `failed`, with the reason), the
-   * start and end times, xcrack's version, the command line, and the files
-   * it wrote. A run killed on the way leaves `running`: its files are
+   * start and end times, xcrack's version, the command line, the cycles
+   * of a growth run, what the run flags as unreliable, and the files it
+   * wrote. A run killed on the way leaves `running`: its files are
    * incomplete. Rewritten atomically whenever it changes (rank 0).
    *
    * A new run (not a resumed one) first moves the numbered results of an
@@ -50,6 +52,25 @@ namespace xcrack
     void
     add_file(const std::string &name);
 
+    /// The entries the command line set (`xcrack -s`), before start().
+    void
+    set_overrides(const std::vector<std::string> &assignments);
+
+    /// The load cycles a growth run counted.
+    void
+    set_cycles(const double total);
+
+    /**
+     * What the run flags as unreliable: the keys of the solves with
+     * flagged front points (`018`), their number, the reasons, and the
+     * cycles that rest on their K.
+     */
+    void
+    set_unreliable(const std::vector<std::string> &solves,
+                   const unsigned long long        n_points,
+                   const std::vector<std::string> &reasons,
+                   const double                    n_cycles);
+
     /// The end: @p status `completed` or `failed`, and why.
     void
     finish(const std::string &status, const std::string &reason);
@@ -64,6 +85,11 @@ namespace xcrack
     std::string              start_time, end_time, command_line;
     bool                     resumed = false;
     std::vector<std::string> files;
+    std::vector<std::string> overrides;
+    std::optional<double>    cycles;
+    std::vector<std::string> unreliable_solves, unreliable_reasons;
+    unsigned long long       unreliable_points = 0;
+    double                   unreliable_cycles = 0;
   };
 } // namespace xcrack
 

@@ -91,16 +91,23 @@ namespace xcrack
     /**
      * Parse and check every input and build the mesh. With a non-empty
      * @p resume_directory, run() continues the run checkpointed there
-     * instead of starting one (`xcrack --resume`).
+     * instead of starting one (`xcrack --resume`). With @p check_only
+     * (`xcrack --check`) the checks create nothing: a missing output
+     * directory is not made.
      */
     Simulator(ParameterHandler  &prm,
               const MPI_Comm     mpi_communicator = MPI_COMM_WORLD,
-              const std::string &resume_directory = "");
+              const std::string &resume_directory = "",
+              const bool         check_only       = false);
 
     /// Solve on the sequence of meshes and steps and write all results,
     /// with their record run.json.
     void
     run();
+
+    /// The entries the command line set (`xcrack -s`), for run.json.
+    void
+    record_overrides(const std::vector<std::string> &overrides);
 
     /// One row per solve, as written to statistics.csv.
     const Statistics &
@@ -299,6 +306,14 @@ namespace xcrack
     void
     solve_and_report(const unsigned int mesh, const unsigned int n_meshes);
 
+    /**
+     * The name of the files of the solve on mesh @p mesh of step
+     * @p step_of_solve: the step (`007`), or the step and the mesh
+     * (`000.03`) when the step is solved on several meshes.
+     */
+    std::string
+    solve_key(const unsigned int step_of_solve, const unsigned int mesh) const;
+
     /// The timings of the solve into its row, the output files under the
     /// name @p key and statistics.csv (core.cc).
     void
@@ -351,6 +366,12 @@ namespace xcrack
     report_step(const TerminationCriteria::Verdict &verdict,
                 const double                        delta_cycles,
                 const double                        largest);
+
+    /// The cycles so far that rest on a flagged K (unreliable_cycles):
+    /// those of the last advance, @p delta_cycles, if a point of this step
+    /// or the previous one is flagged.
+    void
+    count_unreliable_cycles(const double delta_cycles);
 
     /// A stop if a crack has fewer fronts than at the last step (a tip ran
     /// out of the body): grow() then counts no cycles for the advance.
@@ -415,6 +436,19 @@ namespace xcrack
     compute_fracture_parameters(const LoadState<dim> &state,
                                 const bool            report = true);
 
+    /// The number of front points whose K cannot be trusted, and why, into
+    /// the statistics row (the front file says which) (fracture.cc).
+    void
+    flag_unreliable_points();
+
+    /**
+     * What the run's results rest on, at its end: the solves whose front
+     * points are flagged, and in a growth run the cycles that rest on
+     * their K. On screen and in run.json (growth.cc).
+     */
+    void
+    report_unreliable();
+
     /// (r_inf, r_sup) of the estimate's wide crown around @p fronts (2D:
     /// a point each): as wide as the boundary, the other fronts and, in
     /// 3D, the fronts' curvature allow (fracture.cc).
@@ -450,6 +484,22 @@ namespace xcrack
     void
     write_front_table(std::ostream &csv) const;
 
+    /**
+     * Add the files of this solve to a ParaView series (solution.pvd,
+     * crack.pvd): at the time of the solve, the load cycles (a growth run),
+     * the step (one that counts no cycles) or the mesh (a static run),
+     * replacing an earlier solve of the same step (output.cc).
+     */
+    void
+    add_series_record(std::vector<std::pair<double, std::string>> &records,
+                      const std::vector<std::string>              &files) const;
+
+    /// A PVD file of @p records, @p n_parts files at each time (output.cc).
+    static void
+    write_series(std::ostream                                      &pvd,
+                 const std::vector<std::pair<double, std::string>> &records,
+                 const unsigned int                                 n_parts);
+
     /// VTU files of the solution and of the cracks (output.cc).
     void
     output_results(const std::string &key);
@@ -481,14 +531,17 @@ namespace xcrack
     refine_before_first_solve();
 
     /// Execute the marked refinement and coarsening, capped at the levels
-    /// of the parameters, carrying the fields; false if nothing was marked.
+    /// of the parameters (and at @p level_cap), carrying the fields; false
+    /// if nothing was marked.
     bool
-    execute_refinement();
+    execute_refinement(
+      const unsigned int level_cap = numbers::invalid_unsigned_int);
 
-    /// Clear the flags beyond the levels of the parameters; false if no
-    /// flag is left on any rank.
+    /// Clear the flags beyond the levels of the parameters (and refine
+    /// flags at @p level_cap); false if no flag is left on any rank.
     bool
-    cap_refinement_flags();
+    cap_refinement_flags(
+      const unsigned int level_cap = numbers::invalid_unsigned_int);
 
     /**
      * After a solve, for a strategy with a goal: report how far the goal
@@ -601,7 +654,8 @@ namespace xcrack
     /// before the first one).
     std::vector<FrontMove<dim>> previous_moves;
     Statistics                  statistics;
-    /// (step, file) of solution-<key>.pvtu and crack-<key>.vtu.
+    /// (time, file) of the series solution.pvd and crack.pvd
+    /// (add_series_record()).
     std::vector<std::pair<double, std::string>> pvd_records, crack_records;
     /// @}
 
@@ -624,6 +678,13 @@ namespace xcrack
 
     /// The checkpoint to continue from (empty: a new run).
     std::string resume_directory;
+    /// Only the input checks (`xcrack --check`): nothing is created.
+    bool check_only = false;
+    /// The level of the cells at the fronts during growth, once step 0 set
+    /// it (adapt_mesh_to_fronts()).
+    unsigned int growth_front_level = numbers::invalid_unsigned_int;
+    /// The entries the command line set (run.json lists them).
+    std::vector<std::string> command_line_overrides;
     /// Whether the screen shows the detail of each solve (the crack, K per
     /// tip or front) or one line per step.
     bool detailed_screen = true;

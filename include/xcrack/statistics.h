@@ -26,9 +26,17 @@ namespace xcrack
     void
     add_value(const std::string &column, const unsigned long long value);
 
+    /// A word or a few (no comma, no newline): a flag's reason.
+    void
+    add_text(const std::string &column, const std::string &text);
+
     /// Value of @p column in row @p row (NaN if the cell is empty).
     double
     get(const std::string &column, const unsigned int row) const;
+
+    /// The text of @p column in row @p row (empty if it holds none).
+    std::string
+    text(const std::string &column, const unsigned int row) const;
 
     unsigned int
     n_rows() const;
@@ -48,14 +56,15 @@ namespace xcrack
   private:
     struct Cell
     {
-      double value      = 0;
-      bool   is_integer = false;
+      double      value      = 0;
+      bool        is_integer = false;
+      std::string text;
 
       template <class Archive>
       void
       serialize(Archive &archive, const unsigned int)
       {
-        archive &value &is_integer;
+        archive &value &is_integer &text;
       }
     };
     std::vector<std::string>                 columns;

@@ -98,12 +98,13 @@ namespace xcrack
           prm.declare_entry(
             "File name",
             "",
-            Patterns::Anything(),
+            Patterns::FileName(Patterns::FileName::input),
             "Mesh: the crack surface, triangles or quadrilaterals in 3D, "
             "line segments in 2D, in a Gmsh (.msh, ASCII 2.2 or 4.1) or "
             "legacy VTK (.vtk, ASCII) file. Its boundary is the front where "
             "it lies inside the body and a mouth elsewhere. A relative path "
-            "is taken from the directory the run starts in.");
+            "is taken from the directory of the parameter file that sets "
+            "it.");
           prm.declare_entry(
             "Level set band",
             "0",

@@ -401,7 +401,10 @@ namespace xcrack
     const std::string what = entry + " = " + file_name;
     std::ifstream     in(file_name);
     check_input(static_cast<bool>(in),
-                what + ": cannot open this file for reading.");
+                what +
+                  ": cannot open this file for reading (a relative name is "
+                  "read from the directory of the parameter file that sets "
+                  "it).");
     const std::string ext = lower_extension(file_name);
     RawMesh           raw;
     if (ext == ".msh")

@@ -33,6 +33,15 @@ namespace xcrack
                           Patterns::Integer(0, 30),
                           "Cells at this refinement level are not refined "
                           "further.");
+        prm.declare_entry(
+          "Growth level",
+          "0",
+          Patterns::Integer(0, 30),
+          "While the cracks grow, with a Strategy that follows the fronts "
+          "without a goal (front): the refinement level of the cells at the "
+          "fronts. 0: the finest level of step 0's last mesh, so that the "
+          "fronts keep the resolution the initial crack was solved with; a "
+          "larger level refines the fronts to it (at most Maximum level).");
         prm.declare_entry("Minimum level",
                           "0",
                           Patterns::Integer(0, 30),
@@ -50,10 +59,11 @@ namespace xcrack
     {
       prm.enter_subsection("Mesh refinement");
       {
-        n_meshes  = prm.get_integer("Number of meshes");
-        strategy  = prm.get("Strategy");
-        max_level = prm.get_integer("Maximum level");
-        min_level = prm.get_integer("Minimum level");
+        n_meshes     = prm.get_integer("Number of meshes");
+        strategy     = prm.get("Strategy");
+        max_level    = prm.get_integer("Maximum level");
+        growth_level = prm.get_integer("Growth level");
+        min_level    = prm.get_integer("Minimum level");
       }
       prm.leave_subsection();
     }

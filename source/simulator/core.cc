@@ -47,7 +47,8 @@ namespace xcrack
   template <int dim>
   Simulator<dim>::Simulator(ParameterHandler  &prm,
                             const MPI_Comm     mpi_communicator,
-                            const std::string &resume_directory)
+                            const std::string &resume_directory,
+                            const bool         check_only)
     : mpi_communicator(mpi_communicator)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , prm(prm)
@@ -60,6 +61,7 @@ namespace xcrack
                     Triangulation<dim>::limit_level_difference_at_vertices)
     , level_sets(triangulation)
     , resume_directory(resume_directory)
+    , check_only(check_only)
   {
     run_parameters.parse_parameters(prm);
     check_input(run_parameters.dimension == dim,
@@ -158,6 +160,15 @@ namespace xcrack
 
 
   template <int dim>
+  void
+  Simulator<dim>::record_overrides(const std::vector<std::string> &overrides)
+  {
+    command_line_overrides = overrides;
+  }
+
+
+
+  template <int dim>
   const Statistics &
   Simulator<dim>::get_statistics() const
   {
@@ -180,6 +191,7 @@ namespace xcrack
     std::filesystem::create_directories(run_parameters.output_directory);
     run_record = std::make_unique<RunRecord>(run_parameters.output_directory,
                                              mpi_communicator);
+    run_record->set_overrides(command_line_overrides);
     run_record->start(!resume_directory.empty());
     try
       {
@@ -304,6 +316,7 @@ namespace xcrack
           }
       }
 
+    report_unreliable();
     if (exact_solution && statistics.n_rows() > 1 && !propagation.enabled())
       print_convergence_table();
     if (run_parameters.timing_summary)
@@ -343,8 +356,7 @@ namespace xcrack
         // front file shows them).
         if (propagation.enabled() && last)
           stop = grow();
-        key = Utilities::int_to_string(step, 3) +
-              (n_meshes > 1 ? "." + Utilities::int_to_string(mesh, 2) : "");
+        key = solve_key(step, mesh);
         finish_solve(key);
         if (!results_written)
           run_record->keep_results();
@@ -359,6 +371,21 @@ namespace xcrack
     advance_cracks();
     ++step;
     return false;
+  }
+
+
+
+  template <int dim>
+  std::string
+  Simulator<dim>::solve_key(const unsigned int step_of_solve,
+                            const unsigned int mesh) const
+  {
+    const unsigned int n_meshes =
+      (step_of_solve == 0 || mesh_refinement->has_goal() ?
+         refinement_parameters.n_meshes :
+         1);
+    return Utilities::int_to_string(step_of_solve, 3) +
+           (n_meshes > 1 ? "." + Utilities::int_to_string(mesh, 2) : "");
   }
 
 

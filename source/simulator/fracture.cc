@@ -88,8 +88,15 @@ namespace xcrack
     const MappingQ1<dim>        mapping;
     const GridTools::Cache<dim> cache(triangulation, mapping);
     for (auto &v : front_values)
-      v.k_jump = displacement_jump_k(
-        dof_handler, cache, solution, v.point, material, v.r_inf, v.r_sup);
+      v.k_jump = displacement_jump_k(dof_handler,
+                                     cache,
+                                     solution,
+                                     v.point,
+                                     material,
+                                     v.r_inf,
+                                     v.r_sup,
+                                     enrichment.get());
+    flag_unreliable_points();
     const auto &values = front_values;
     // In a growth run the screen shows one line per step; the values are
     // in front_<step>.csv.
@@ -160,10 +167,13 @@ namespace xcrack
           out << "  tip " << i + 1 << std::scientific << std::setprecision(6)
               << ": K_I = " << rounded(v.k_I) << ", K_II = " << rounded(v.k_II)
               << ", G = " << v.g << ", G_Irwin = " << v.g_irwin << std::endl
-              << "    displacement jumps: K_I = "
-              << rounded(values[i].k_jump[0])
-              << ", K_II = " << rounded(values[i].k_jump[1])
-              << std::defaultfloat << std::endl;
+              << "    displacement jumps: ";
+          if (std::isfinite(v.k_jump[0]))
+            out << "K_I = " << rounded(v.k_jump[0])
+                << ", K_II = " << rounded(v.k_jump[1]);
+          else
+            out << "none (the lips across the crown are too short or kinked)";
+          out << std::defaultfloat << std::endl;
           if (estimate)
             out << "    estimated errors (K_exact - K): K_I " << std::scientific
                 << std::setprecision(2) << rounded(v.k_error[0]) << ", K_II "
@@ -180,8 +190,12 @@ namespace xcrack
           statistics.add_value("K_I" + suffix, v.k_I);
           statistics.add_value("K_II" + suffix, v.k_II);
           statistics.add_value("G" + suffix, v.g);
-          statistics.add_value("K_I_jump" + suffix, values[i].k_jump[0]);
-          statistics.add_value("K_II_jump" + suffix, values[i].k_jump[1]);
+          // (Left empty where the lips do not reach across the crown.)
+          if (std::isfinite(v.k_jump[0]))
+            {
+              statistics.add_value("K_I_jump" + suffix, v.k_jump[0]);
+              statistics.add_value("K_II_jump" + suffix, v.k_jump[1]);
+            }
           if (estimate)
             {
               statistics.add_value("K_I_estimate" + suffix, v.k_error[0]);
@@ -318,6 +332,31 @@ namespace xcrack
               << std::round(error[m] * 1e6) * 1e-6;
         out << std::defaultfloat << std::endl;
       }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::flag_unreliable_points()
+  {
+    // The files say which points a run cannot trust (front_<key>.csv per
+    // point, statistics.csv per solve): the screen's warnings alone are
+    // lost once the run is over.
+    unsigned long long       n_unreliable = 0;
+    std::vector<std::string> reasons;
+    for (const FrontValues<dim> &v : front_values)
+      if (const std::string why = v.unreliable_reason(); !why.empty())
+        {
+          ++n_unreliable;
+          if (std::find(reasons.begin(), reasons.end(), why) == reasons.end())
+            reasons.push_back(why);
+        }
+    std::string text;
+    for (const std::string &why : reasons)
+      text += (text.empty() ? "" : "; ") + why;
+    statistics.add_value("unreliable_points", n_unreliable);
+    statistics.add_text("reason", text);
   }
 
 
@@ -690,6 +729,9 @@ namespace xcrack
       (front_moves.size() == front_values.size() && !front_moves.empty());
     if (moves)
       csv << ",K_I_min,K_II_min,K_III_min,K_eq,delta_K,rate,angle,advance";
+    // Last: whether the point's K (and its growth) cannot be trusted, and
+    // why.
+    csv << ",unreliable,reason";
     csv << '\n' << std::setprecision(10);
     for (unsigned int i = 0; i < front_values.size(); ++i)
       {
@@ -698,9 +740,13 @@ namespace xcrack
             << v.point.position[1] << ','
             << (dim == 3 ? v.point.position[dim - 1] : 0.) << ',' << v.k_I
             << ',' << v.k_II << ',' << v.k_III << ',' << v.g << ',' << v.g_irwin
-            << ',' << v.r_inf << ',' << v.r_sup << ',' << v.k_jump[0] << ','
-            << v.k_jump[1] << ',' << v.k_jump[2] << ',' << v.front + 1 << ','
-            << v.closed;
+            << ',' << v.r_inf << ',' << v.r_sup << ',';
+        // No cross-check where the lips do not reach across the crown.
+        if (std::isfinite(v.k_jump[0]))
+          csv << v.k_jump[0] << ',' << v.k_jump[1] << ',' << v.k_jump[2];
+        else
+          csv << ",,";
+        csv << ',' << v.front + 1 << ',' << v.closed;
         if (errors)
           csv << ',' << v.k_error[0] << ',' << v.k_error[1] << ','
               << v.k_error[2];
@@ -715,7 +761,8 @@ namespace xcrack
               csv << m.rate;
             csv << ',' << m.angle << ',' << m.advance;
           }
-        csv << '\n';
+        const std::string why = v.unreliable_reason();
+        csv << ',' << !why.empty() << ',' << why << '\n';
       }
   }
 

@@ -41,6 +41,7 @@ namespace xcrack
         cycles += delta_cycles;
       }
     statistics.add_value("cycles", cycles);
+    count_unreliable_cycles(delta_cycles);
 
     // What ends the run, if anything; else how far the next step may go.
     double largest = propagation.maximum_advance();
@@ -54,6 +55,89 @@ namespace xcrack
       }
     report_step(verdict, delta_cycles, largest);
     return verdict.stop;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::count_unreliable_cycles(const double delta_cycles)
+  {
+    // The cycles of an advance rest on the K's at both of its ends: this
+    // step's last solve (this row) and the previous step's.
+    const auto flagged = [&](const unsigned int row) {
+      return statistics.get("unreliable_points", row) > 0;
+    };
+    const unsigned int this_row         = statistics.n_rows() - 1;
+    double             before           = 0;
+    bool               rests_on_flagged = flagged(this_row);
+    for (unsigned int row = this_row; row-- > 0;)
+      if (statistics.get("step", row) + 1 == step)
+        {
+          before           = statistics.get("unreliable_cycles", row);
+          before           = (std::isnan(before) ? 0. : before);
+          rests_on_flagged = rests_on_flagged || flagged(row);
+          break;
+        }
+    statistics.add_value("unreliable_cycles",
+                         before + (rests_on_flagged ? delta_cycles : 0.));
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::report_unreliable()
+  {
+    // Which solves have flagged points (their keys, as the files name
+    // them) and why.
+    std::vector<std::string> keys, reasons;
+    unsigned long long       n_points = 0;
+    for (unsigned int row = 0; row < statistics.n_rows(); ++row)
+      if (statistics.get("unreliable_points", row) > 0)
+        {
+          keys.push_back(solve_key((unsigned int)statistics.get("step", row),
+                                   (unsigned int)statistics.get("mesh", row)));
+          n_points +=
+            (unsigned long long)statistics.get("unreliable_points", row);
+          for (const std::string &why :
+               Utilities::split_string_list(statistics.text("reason", row),
+                                            ';'))
+            if (std::find(reasons.begin(), reasons.end(), why) == reasons.end())
+              reasons.push_back(why);
+        }
+    double unreliable_cycles = 0;
+    if (propagation.enabled() && propagation.counts_cycles() &&
+        statistics.n_rows() > 0)
+      {
+        unreliable_cycles =
+          statistics.get("unreliable_cycles", statistics.n_rows() - 1);
+        unreliable_cycles =
+          (std::isnan(unreliable_cycles) ? 0. : unreliable_cycles);
+      }
+    run_record->set_unreliable(keys, n_points, reasons, unreliable_cycles);
+    if (propagation.enabled() && propagation.counts_cycles())
+      run_record->set_cycles(cycles);
+    if (keys.empty())
+      return;
+
+    std::ostringstream text;
+    text << "Unreliable: " << n_points << " front point"
+         << (n_points > 1 ? "s" : "") << " in " << keys.size() << " of "
+         << statistics.n_rows() << " solves (";
+    for (unsigned int k = 0; k < keys.size(); ++k)
+      text << (k > 0 ? ", " : "") << keys[k];
+    text << "):";
+    for (unsigned int r = 0; r < reasons.size(); ++r)
+      text << (r > 0 ? ";" : "") << " " << reasons[r];
+    text << " (`unreliable` and `reason` in the front files and "
+            "statistics.csv).";
+    if (unreliable_cycles > 0)
+      text << std::scientific << std::setprecision(4) << " Of the " << cycles
+           << " cycles, " << unreliable_cycles << " (" << std::fixed
+           << std::setprecision(1) << 100 * unreliable_cycles / cycles
+           << " %) rest on the K of these steps.";
+    pcout << text.str() << std::endl;
   }
 
 

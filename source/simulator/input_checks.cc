@@ -7,6 +7,7 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <unistd.h>
 
 namespace xcrack
 {
@@ -113,6 +114,22 @@ namespace xcrack
                 "Output directory = " + run_parameters.output_directory +
                   ": exists and is not a directory.");
     unsigned int writable = 1;
+    if (check_only && !std::filesystem::exists(dir))
+      {
+        // Creatable: the nearest directory above it that exists is
+        // writable.
+        std::filesystem::path above =
+          std::filesystem::absolute(dir).parent_path();
+        while (!std::filesystem::exists(above) && above.has_parent_path() &&
+               above != above.parent_path())
+          above = above.parent_path();
+        check_input(std::filesystem::is_directory(above) &&
+                      ::access(above.c_str(), W_OK) == 0,
+                    "Output directory = " + run_parameters.output_directory +
+                      ": cannot create it (" + above.string() +
+                      " is not a writable directory).");
+        return;
+      }
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
         std::error_code error;

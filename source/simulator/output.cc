@@ -5,6 +5,7 @@
 #include <xcrack/simulator.h>
 
 #include <fstream>
+#include <iomanip>
 
 namespace xcrack
 {
@@ -91,27 +92,32 @@ namespace xcrack
                return std::vector<double>{state(c).slipping};
              }});
       }
+    const bool root = (Utilities::MPI::this_mpi_process(mpi_communicator) == 0);
     if (enrichment)
-      for (unsigned int c = 0; c < crack_surfaces.size(); ++c)
-        {
-          const std::string name =
-            "crack" +
-            (cracks.size() > 1 ? std::to_string(c + 1) : std::string()) + "-" +
-            key + ".vtu";
-          crack_surfaces[c].write_vtu(dir + name,
-                                      dof_handler,
-                                      solution,
-                                      lip_fields);
-          run_record->add_file(name);
-          if (c == 0 && Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-            {
-              crack_records.emplace_back(statistics.n_rows() - 1, name);
-              write_file(dir + "crack.pvd", [&](std::ostream &pvd) {
-                DataOutBase::write_pvd_record(pvd, crack_records);
-              });
-              run_record->add_file("crack.pvd");
-            }
-        }
+      {
+        std::vector<std::string> names;
+        for (unsigned int c = 0; c < crack_surfaces.size(); ++c)
+          {
+            names.push_back(
+              "crack" +
+              (cracks.size() > 1 ? std::to_string(c + 1) : std::string()) +
+              "-" + key + ".vtu");
+            crack_surfaces[c].write_vtu(dir + names.back(),
+                                        dof_handler,
+                                        solution,
+                                        lip_fields);
+            run_record->add_file(names.back());
+          }
+        // crack.pvd: every crack, one part each.
+        if (root)
+          {
+            add_series_record(crack_records, names);
+            write_file(dir + "crack.pvd", [&](std::ostream &pvd) {
+              write_series(pvd, crack_records, cracks.size());
+            });
+            run_record->add_file("crack.pvd");
+          }
+      }
 
     const std::string  base = "solution-" + key;
     const unsigned int rank =
@@ -129,11 +135,9 @@ namespace xcrack
         write_file(dir + base + ".pvtu", [&](std::ostream &pvtu) {
           data_out.write_pvtu_record(pvtu, pieces);
         });
-        // The time of a record: the index of the solve (the row of
-        // statistics.csv), which increases over meshes and steps alike.
-        pvd_records.emplace_back(statistics.n_rows() - 1, base + ".pvtu");
+        add_series_record(pvd_records, {base + ".pvtu"});
         write_file(dir + "solution.pvd", [&](std::ostream &pvd) {
-          DataOutBase::write_pvd_record(pvd, pvd_records);
+          write_series(pvd, pvd_records, 1);
         });
         for (const std::string &piece : pieces)
           run_record->add_file(piece);
@@ -141,6 +145,66 @@ namespace xcrack
         run_record->add_file("solution.pvd");
       }
   }
+
+
+  namespace
+  {
+    /// The step of the solve that wrote @p file (`solution-007.pvtu`,
+    /// `crack2-000.01.vtu`): the digits after its first '-'.
+    unsigned int
+    step_of_file(const std::string &file)
+    {
+      const std::string::size_type dash = file.find('-');
+      return std::stoul(file.substr(dash + 1));
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::add_series_record(
+    std::vector<std::pair<double, std::string>> &records,
+    const std::vector<std::string>              &files) const
+  {
+    // ParaView's time: the load cycles of a growth run (its step when it
+    // counts no cycles), the mesh of a static one. A step solved on
+    // several meshes keeps its last solve in the series, the one its
+    // growth rests on (the others' files stay, listed in run.json).
+    double time = statistics.get("mesh", statistics.n_rows() - 1);
+    if (propagation.enabled())
+      {
+        time = (propagation.counts_cycles() ? cycles : double(step));
+        while (!records.empty() && step_of_file(records.back().second) == step)
+          records.pop_back();
+      }
+    for (const std::string &file : files)
+      records.emplace_back(time, file);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_series(
+    std::ostream                                      &pvd,
+    const std::vector<std::pair<double, std::string>> &records,
+    const unsigned int                                 n_parts)
+  {
+    // deal.II's write_pvd_record() writes one part per time; a series of
+    // several cracks has one part per crack at each time, in their order.
+    pvd << "<?xml version=\"1.0\"?>\n"
+        << "<VTKFile type=\"Collection\" version=\"0.1\" "
+           "ByteOrder=\"LittleEndian\">\n"
+        << "  <Collection>\n"
+        << std::setprecision(16);
+    for (unsigned int i = 0; i < records.size(); ++i)
+      pvd << "    <DataSet timestep=\"" << records[i].first
+          << "\" group=\"\" part=\"" << i % n_parts << "\" file=\""
+          << records[i].second << "\"/>\n";
+    pvd << "  </Collection>\n</VTKFile>\n";
+  }
+
 
 
   template class Simulator<2>;

@@ -1,17 +1,19 @@
 #include <xcrack/simulator.h>
 
+#include <limits>
+
 namespace xcrack
 {
   template <int dim>
   bool
-  Simulator<dim>::cap_refinement_flags()
+  Simulator<dim>::cap_refinement_flags(const unsigned int level_cap)
   {
-    bool marked = false;
+    const int finest = std::min(refinement_parameters.max_level, level_cap);
+    bool      marked = false;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          if (cell->refine_flag_set() &&
-              cell->level() >= int(refinement_parameters.max_level))
+          if (cell->refine_flag_set() && cell->level() >= finest)
             cell->clear_refine_flag();
           if (cell->coarsen_flag_set() &&
               cell->level() <= int(refinement_parameters.min_level))
@@ -26,9 +28,9 @@ namespace xcrack
 
   template <int dim>
   bool
-  Simulator<dim>::execute_refinement()
+  Simulator<dim>::execute_refinement(const unsigned int level_cap)
   {
-    if (!cap_refinement_flags())
+    if (!cap_refinement_flags(level_cap))
       return false;
     // Indexed by the cells of the mesh about to change.
     k_error_cells.indicators.reinit(0);
@@ -97,12 +99,40 @@ namespace xcrack
     // region) leaves the mesh as it is once the cracks grow.
     if (!mesh_refinement->follows_fronts())
       return;
+    // Without a goal the strategy refines the cells at the fronts at every
+    // pass: the growing fronts keep the level step 0 reached (the mesh's
+    // finest, whose cells are at the fronts), or Growth level.
+    unsigned int cap = numbers::invalid_unsigned_int;
+    if (!mesh_refinement->has_goal())
+      {
+        if (refinement_parameters.growth_level > 0)
+          cap = refinement_parameters.growth_level;
+        else
+          {
+            if (growth_front_level == numbers::invalid_unsigned_int)
+              {
+                growth_front_level = triangulation.n_global_levels() - 1;
+                double h           = std::numeric_limits<double>::max();
+                for (const auto &cell : triangulation.active_cell_iterators())
+                  if (cell->is_locally_owned())
+                    h = std::min(h, cell->diameter());
+                h = Utilities::MPI::min(h, mpi_communicator);
+                pcout << "Growth: the cells at the fronts stay at refinement "
+                         "level "
+                      << growth_front_level << " (diameter " << h
+                      << "), the finest of step 0 (Mesh refinement/Growth "
+                         "level)."
+                      << std::endl;
+              }
+            cap = growth_front_level;
+          }
+      }
     // One level per pass, until the marking reaches a fixed point.
     for (unsigned int pass = 0; pass <= refinement_parameters.max_level + 1;
          ++pass)
       {
         mesh_refinement->mark(triangulation);
-        if (!execute_refinement())
+        if (!execute_refinement(cap))
           break;
         // Unmoved cracks (before the first solve) are marked by their
         // shapes, not by fields interpolated from the coarser mesh.

@@ -1,5 +1,8 @@
 #include <deal.II/base/mpi.h>
 
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/grid_tools_cache.h>
+
 #include <xcrack/crack/crack_surface.h>
 #include <xcrack/front_move.h>
 #include <xcrack/termination_criteria/crack_leaves_body.h>
@@ -71,6 +74,54 @@ namespace xcrack
         }
       return verdict;
     }
+
+    template <int dim>
+    double
+    CrackLeavesBody<dim>::progress() const
+    {
+      // Every rank holds the whole coarse mesh (its artificial cells): a
+      // point is inside the body if some active cell holds it, here.
+      const GridTools::Cache<dim> cache(this->get_triangulation());
+      typename Triangulation<dim>::active_cell_iterator hint;
+      const auto inside = [&](const Point<dim> &x) {
+        try
+          {
+            const auto found =
+              GridTools::find_active_cell_around_point(cache, x, hint);
+            // (The search may return the nearest cell of a point outside.)
+            if (found.first.state() != IteratorState::valid ||
+                !GeometryInfo<dim>::is_inside_unit_cell(found.second, 1e-10))
+              return false;
+            hint = found.first;
+            return true;
+          }
+        catch (...)
+          {
+            return false;
+          }
+      };
+      // At most a thousand steps ahead: beyond, the estimate is of no use.
+      constexpr unsigned int most = 1000;
+      unsigned int           left = most;
+      for (const FrontMove<dim> &m : this->get_front_moves())
+        {
+          if (!(m.advance > 0))
+            continue;
+          const Tensor<1, dim> d = m.direction() / m.direction().norm();
+          if (!inside(m.point.position + m.advance * d))
+            continue;
+          unsigned int k = 2;
+          while (k < left && inside(m.point.position + k * m.advance * d))
+            ++k;
+          left = std::min(left, k);
+        }
+      if (left == most)
+        return 0;
+      const double done = this->get_step() + 1;
+      return done / (done + left - 1);
+    }
+
+
 
     template <int dim>
     void

@@ -21,7 +21,8 @@
 #   it; a killed run leaves no lock behind;
 # - a checkpoint edited, truncated or missing a file is refused by name;
 # - bad input found in the first solve keeps the earlier run's results.
-# The scene: the demo (prm/demo.prm), one mesh per step.
+# The scene: the demo (prm/demo.prm), one mesh per step (step 0 on the
+# initial mesh, the fronts refined to level 4 as the cracks grow).
 #
 #   growth_checks.sh XCRACK_EXECUTABLE SOURCE_DIRECTORY
 set -u
@@ -41,7 +42,7 @@ run() {
     echo "include $demo"
     echo "set Output directory = out_$name"
     printf 'subsection Output\n  set Write vtu = false\n  set Timing summary = false\nend\n'
-    printf 'subsection Mesh refinement\n  set Number of meshes = 1\nend\n'
+    printf 'subsection Mesh refinement\n  set Number of meshes = 1\n  set Growth level = 4\nend\n'
     printf 'subsection Propagation\n  set Number of steps = %s\nend\n' "$steps"
     cat
   } > "$name.prm"

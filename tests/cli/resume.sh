@@ -33,9 +33,17 @@ def differences(x, y, name):
         return [f"{name}: different rows or columns"]
     found = []
     for i, (r, s) in enumerate(zip(x, y)):
-        number = lambda t: float(t) if t else 0.
+        def number(t):
+            try:
+                return float(t) if t else 0.
+            except ValueError:
+                return 0.  # a text (a reason): compared as text below
         scale = max([abs(number(t)) for t in list(r.values()) + list(s.values())] + [0.])
         for column in r:
+            if number(r[column]) == 0. and r[column] != s[column] and \
+                    number(s[column]) == 0.:
+                found.append(f"{name} row {i}: {column} {r[column]!r} != {s[column]!r}")
+                continue
             u, v = number(r[column]), number(s[column])
             if abs(u - v) > tolerance * scale:
                 found.append(f"{name} row {i}: {column} {u!r} != {v!r}")

@@ -17,7 +17,7 @@ namespace xcrack
 
   /**
    * A point of a crack front with its local frame, in the conventions of
-   * BENCHMARKS.md: e1 lies in the crack plane, normal to the front and
+   * doc/benchmarks.md: e1 lies in the crack plane, normal to the front and
    * pointing ahead of it (the propagation direction); e2 is the crack-plane
    * normal, pointing to the "upper" lip (lsn > 0 for a crack whose front
    * frames all share one normal); in 3D e3 = e1 x e2 is tangent to the

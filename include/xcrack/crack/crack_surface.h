@@ -35,7 +35,7 @@ namespace xcrack
    * reference faces); each cell with two crossings contributes a segment,
    * segments are joined at common points across all ranks, and the chains
    * are oriented so that e3 = e1 x e2 points along increasing s
-   * (BENCHMARKS.md). The frame at a point comes from the level-set
+   * (doc/benchmarks.md). The frame at a point comes from the level-set
    * gradients averaged over the cells that share the point: e2 along grad
    * lsn, e1 along grad lst made normal to e2. In 2D every tip is a front of
    * one point, and e2 is e1 turned by +90 degrees as for the analytic

@@ -31,7 +31,7 @@ namespace xcrack
     public:
       /**
        * The kink angle (radians, from e1 towards e2: K_II > 0 gives a
-       * negative angle, BENCHMARKS.md Case 10) of a tip with @p k_I >= 0
+       * negative angle, doc/benchmarks.md Case 10) of a tip with @p k_I >= 0
        * and @p k_II.
        */
       virtual double

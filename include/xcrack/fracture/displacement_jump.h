@@ -14,6 +14,9 @@ namespace xcrack
 {
   using namespace dealii;
 
+  template <int dim>
+  class Enrichment;
+
   /**
    * K_I, K_II (and K_III in 3D) at a 2D tip or a point of a 3D front from
    * the opening and sliding of the lips behind it, an estimate independent of
@@ -30,15 +33,25 @@ namespace xcrack
    * extrapolated to r = 0, which removes the first correction (the T-stress
    * does not open the lips; the next term of the expansion grows like r).
    * The lips are sampled along -e1 in the plane (e1, e2) of the front
-   * point, delta = 0.01 @p r_min and 2 delta off the crack on each side:
+   * point; with @p enrichment each sample is moved onto the discrete lip
+   * (the zero of its cell's fitted lsn, along grad lsn) and read in the
+   * lip's frame there, so that a crack that kinked or curves behind its tip
+   * is followed (without, the straight line misses such lips and the
+   * jumps read nothing or the strain of the bulk); samples on lips turned
+   * by more than 10 degrees from the tip's plane (beyond a kink, where the
+   * field is not the tip's Williams field) are left out. Each sample is read
+   * delta = 0.01 @p r_min and 2 delta off the crack on each side:
    * farther than the fit to vertices moves the discrete crack (at 1e-8 r
    * both points of a sample could fall on one side of it where the crack
    * passed near a vertex, and the fit returned K of the wrong sign). The
    * difference across the lip grows linearly with the offset (the strain
    * along e2); 2 d(delta) - d(2 delta) removes that term.
-   * Collective; every rank gets the result. @p cache finds the sampled
-   * points' cells: one per mesh, shared by all front points (its vertex to
-   * cell map takes longer to build than the samples of one point take).
+   * Where fewer than half the samples lie on the lips (a crack shorter
+   * than the crown, a coarse mesh whose crown leaves the crack) the
+   * result is NaN: no estimate. Collective; every rank gets the result. @p
+   * cache finds the sampled points' cells: one per mesh, shared by all front
+   * points (its vertex to cell map takes longer to build than the samples of
+   * one point take).
    */
   template <int dim>
   std::array<double, 3>
@@ -49,7 +62,8 @@ namespace xcrack
                       const Material                      &material,
                       const double                         r_min,
                       const double                         r_max,
-                      const unsigned int                   n_samples = 8);
+                      const Enrichment<dim>               *enrichment = nullptr,
+                      const unsigned int                   n_samples  = 8);
 } // namespace xcrack
 
 #endif

@@ -119,6 +119,16 @@ namespace xcrack
      * error of the contact pressures (filled by the Simulator).
      */
     bool closed = false;
+
+    /**
+     * Why the point's K, and so its growth, cannot be trusted (a few words
+     * without commas, for the files' `reason` columns); empty if it can.
+     */
+    std::string
+    unreliable_reason() const
+    {
+      return crown_clear ? "" : "crown reaches the boundary or another front";
+    }
   };
 
 
@@ -217,7 +227,7 @@ namespace xcrack
 
     /**
      * K and G along each of @p fronts (ordered front points with frames of
-     * BENCHMARKS.md, a closed front repeating its first point at the end;
+     * doc/benchmarks.md, a closed front repeating its first point at the end;
      * a 2D tip is a front of one point) from the ghosted @p solution on
      * @p dof_handler, at the nodes of each front's FrontBasis.
      * @p lip_pressure and @p body_force (dim components) may be null;

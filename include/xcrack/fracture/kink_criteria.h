@@ -5,7 +5,7 @@ namespace xcrack
 {
   /**
    * The classical criteria for the direction in which a crack tip under
-   * mixed-mode loading (K_I, K_II) kinks, as pure functions (BENCHMARKS.md
+   * mixed-mode loading (K_I, K_II) kinks, as pure functions (doc/benchmarks.md
    * Case 10, whose conventions they follow: the angle theta is measured
    * from e1 towards e2, and K_II > 0 gives a kink theta_c < 0). The
    * direction criterion plugins wrap them; tests check them against the
@@ -31,7 +31,7 @@ namespace xcrack
     /**
      * The energy release rate of a kinked extension in the direction
      * @p theta, times E' (Hussain, Pu and Underwood 1974, in the sign
-     * convention of BENCHMARKS.md): 4 (3 + cos^2)^-2 ((1 - t)/(1 + t))^t
+     * convention of doc/benchmarks.md): 4 (3 + cos^2)^-2 ((1 - t)/(1 + t))^t
      * [(1 + 3 cos^2) K_I^2 - 8 sin cos K_I K_II + (9 - 5 cos^2) K_II^2],
      * t = theta / pi.
      */

@@ -13,7 +13,7 @@ namespace xcrack
   /**
    * The first (singular) term of the crack-tip fields of Williams and
    * Westergaard, modes I, II and III, in the local tip frame of
-   * BENCHMARKS.md (Case 1): polar coordinates (r, theta) about the tip,
+   * doc/benchmarks.md (Case 1): polar coordinates (r, theta) about the tip,
    * theta measured from e1 (ahead of the tip), the lips at theta = +-pi.
    * They are the exact solution of elasticity with traction-free lips for
    * every r, the X-FEM branch functions, and the auxiliary fields of the
@@ -62,7 +62,7 @@ namespace xcrack
 
   /**
    * The Williams field of one straight crack tip as a displacement field in
-   * global coordinates: the exact solution of BENCHMARKS.md Case 1 (used as
+   * global coordinates: the exact solution of doc/benchmarks.md Case 1 (used as
    * Dirichlet data on the whole boundary and to measure errors). In 3D the
    * front is the straight line through @p tip along e3 = e1 x e2 and the
    * field does not vary along it (plane strain with u3 from mode III only).

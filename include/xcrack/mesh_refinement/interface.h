@@ -98,6 +98,8 @@ namespace xcrack
       std::string  strategy  = "global";
       unsigned int max_level = 12;
       unsigned int min_level = 0;
+      /// The level of the front cells during growth (0: step 0's finest).
+      unsigned int growth_level = 0;
     };
 
 

@@ -32,6 +32,15 @@ namespace xcrack
       void
       load(const Plugins::State &state) override;
 
+      /**
+       * The steps done against those done plus those left until the first
+       * front point leaves the body, if each point keeps its direction and
+       * its advance per step (points already on the boundary, such as the
+       * ends of a surface crack's front, are left out).
+       */
+      double
+      progress() const override;
+
     private:
       /// The number of fronts of each crack at the first check.
       std::vector<unsigned int> n_fronts;
