@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Baseline timing of an uncracked 3D Q1 elasticity solve (about 200k DoFs).
 
 Every later X-FEM solve is compared with this. For each solver (direct MUMPS,
@@ -62,7 +62,9 @@ end
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--subdivisions", type=int, default=40)
     args = parser.parse_args()

@@ -6,6 +6,11 @@
 #   contrib/build.sh release    # optimised, for runs and studies
 #   contrib/build.sh debug      # deal.II's debug library, for the test suite
 set -euo pipefail
+case "${1:-}" in
+  -h|--help)
+    sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "${BASH_SOURCE[0]}"
+    exit 0 ;;
+esac
 
 type="${1:-release}"
 case "$type" in

@@ -63,7 +63,9 @@ def k_values(out):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--baseline", required=True,
                         help="the xcrack binary to compare with")
     parser.add_argument("--new", default=os.path.join(

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Convergence tables of the manufactured-solution benchmarks (doc/verification.md).
 
 Runs prm/benchmarks/manufactured_{2d,3d}.prm with Q1 and Q2 elements and prints
@@ -20,7 +20,9 @@ runs = [("manufactured_2d", 1, 7), ("manufactured_2d", 2, 6),
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--ranks", type=int, default=2)
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as work:

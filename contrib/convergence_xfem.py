@@ -1,5 +1,5 @@
-#!/usr/bin/env python3
-"""Convergence of the X-FEM benchmarks of BENCHMARKS.md Case 1 (doc/verification.md).
+#!/usr/bin/python3
+"""Convergence of the X-FEM benchmarks of doc/benchmarks.md Case 1 (doc/verification.md).
 
 Runs prm/benchmarks/exact_mode_I_2d.prm, exact_mixed_2d.prm and
 exact_mode_I_3d.prm with the tip-enrichment variants below, prints one Markdown
@@ -106,7 +106,9 @@ def plot(results):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--ranks", type=int, default=2, help="ranks for the 3D runs")
     parser.add_argument("--quick", action="store_true", help="two meshes fewer")
     args = parser.parse_args()

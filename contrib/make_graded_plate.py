@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Write prm/benchmarks/meshes/graded_plate_2d.msh (Gmsh 2.2 format).
 
 A square plate [-60, 60]^2 whose core [-4, 4]^2 is a uniform grid (30 x 29
@@ -12,6 +12,7 @@ x, 2/3 at the lower/upper y.
 
     python3 contrib/make_graded_plate.py
 """
+import argparse
 import os
 
 here = os.path.dirname(os.path.abspath(__file__))
@@ -39,6 +40,9 @@ def graded(core, n_core, outer, n_outer):
 
 
 def main():
+    argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
     xs = graded(4.0, 30, 60.0, 16)
     ys = graded(4.0, 29, 60.0, 16)
     nx, ny = len(xs), len(ys)

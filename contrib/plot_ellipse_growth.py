@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The embedded elliptical crack of prm/benchmarks/paris_ellipse_3d.prm
 growing towards a circle, against the two-point model.
 
@@ -83,7 +83,9 @@ def two_point(a, b, c, m, n_end, stress=1.0, db=1e-4):
 
 
 def main():
-    parser = argparse.ArgumentParser()
+    parser = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("directory", help="the run's output directory")
     parser.add_argument("--C", type=float, default=1e-3)
     parser.add_argument("--m", type=float, default=3)

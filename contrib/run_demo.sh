@@ -4,10 +4,15 @@
 # under a minute). Results go to output/demo/: the figures of the growth
 # (PNG), the tables (CSV) and the fields (VTU, for ParaView).
 set -euo pipefail
+case "${1:-}" in
+  -h|--help)
+    sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "${BASH_SOURCE[0]}"
+    exit 0 ;;
+esac
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$top/contrib/build.sh" release
 cd "$top"
 "$top/build/release/xcrack" prm/demo.prm
-/usr/bin/python3 "$top/contrib/plot_growth.py" output/demo > /dev/null
-echo "Results in $top/output/demo: growth_cycles.png, growth_path.png;"
+"$top/contrib/plot_growth.py" output/demo --length-unit m --stress-unit MPa > /dev/null
+echo "Results in $top/output/demo: growth_cycles.png, growth_path.png, growth_rate.png;"
 echo "open solution.pvd and crack.pvd in ParaView to watch the crack grow."

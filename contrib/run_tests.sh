@@ -3,6 +3,11 @@
 # needed and run the whole test suite (ctest, two jobs). Extra arguments go to
 # ctest, e.g. `contrib/run_tests.sh -R manufactured`.
 set -euo pipefail
+case "${1:-}" in
+  -h|--help)
+    sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "${BASH_SOURCE[0]}"
+    exit 0 ;;
+esac
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$top/contrib/build.sh" debug
 cd "$top/build/debug"

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Adaptive refinement on a cracked body (doc/verification.md, "Adaptive
 refinement that knows the crack"): the energy error against the DoFs for
 each refinement strategy, printed as markdown tables.
@@ -7,7 +7,7 @@ each refinement strategy, printed as markdown tables.
     /usr/bin/python3 contrib/study_adaptivity.py case1 [--jobs 2]
     /usr/bin/python3 contrib/study_adaptivity.py case1_3d
 
-`case1`: BENCHMARKS.md Case 1 (prm/benchmarks/exact_mode_I_2d.prm, the
+`case1`: doc/benchmarks.md Case 1 (prm/benchmarks/exact_mode_I_2d.prm, the
 exact Williams field of K_I = 1 on the boundary) with topological tip
 enrichment (the tip cell's nodes only), where the energy error of uniform
 refinement goes like N^(-1/4) and adaptivity must recover Q1's N^(-1/2).
@@ -320,7 +320,9 @@ def case1(jobs, three_d=False):
 
 
 if __name__ == "__main__":
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("study", choices=["case1", "case1_3d", "meshes", "hole",
                                           "collinear"])
     parser.add_argument("--jobs", type=int, default=2)

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Condition number of the Heaviside-enriched matrix against the distance of
 the crack to a row of nodes, with and without the volume criterion and fit
 to vertex.
@@ -16,13 +16,14 @@ A second table tilts the crack (slope 0.3) so that it passes delta from
 one node (and 0.1 h or more from the others): the condition number for
 several fit-to-vertex tolerances.
 
-A third table takes BENCHMARKS.md Case 1 (prm/benchmarks/exact_mode_I_2d.prm)
+A third table takes doc/benchmarks.md Case 1 (prm/benchmarks/exact_mode_I_2d.prm)
 on its first three meshes: the condition number against h for a geometric
 tip zone, with and without DOF gathering.
 
     contrib/build.sh release
     python3 contrib/study_conditioning.py
 """
+import argparse
 import csv
 import os
 import subprocess
@@ -104,6 +105,9 @@ end
 
 
 def main():
+    argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
     print("| delta / h | enriched DoFs (tol 0) | condition number (tol 0) | "
           "L2 error (tol 0) | enriched DoFs (tol 1e-9) | condition number "
           "(tol 1e-9) | L2 error (tol 1e-9) | enriched DoFs (fit 1e-2) | "

@@ -160,7 +160,9 @@ def augmented_table(work, mesh):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--meshes", type=int, default=6)
     parser.add_argument("--sweep-mesh", type=int, default=4,
                         help="the mesh (0-based) of the coefficient sweep")

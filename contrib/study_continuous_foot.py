@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The foot of a point on a 3D front polyline, nearest point against the
 normal-plane foot (doc/performance.md, "What blocks the larger steps").
 
@@ -13,6 +13,7 @@ the Newton iterations the normal-plane foot took from the nearest point.
 
     /usr/bin/python3 contrib/study_continuous_foot.py
 """
+import argparse
 import numpy as np
 
 N_POINTS = 65
@@ -62,6 +63,9 @@ def normal_plane_foot(x):
 
 
 def main():
+    argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
     print("| arc radius | height | largest step of s, nearest | largest step, "
           "normal plane | Newton iterations |")
     print("|---|---|---|---|---|")

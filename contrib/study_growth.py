@@ -1,5 +1,5 @@
-#!/usr/bin/env python3
-"""Fatigue growth studies (BENCHMARKS.md Case 9), printed as markdown tables
+#!/usr/bin/python3
+"""Fatigue growth studies (doc/benchmarks.md Case 9), printed as markdown tables
 for doc/verification.md and doc/performance.md.
 
     contrib/build.sh release
@@ -21,7 +21,7 @@ advance.
 `advance`: the same crack from a = 1 to 2 mm with Maximum advance from 0.1
 to 5 front cells: the cycles against the closed form (332,671 cycles).
 
-`dcb`: prm/benchmarks/dcb_2d.prm (BENCHMARKS.md Case 11) for the three
+`dcb`: prm/benchmarks/dcb_2d.prm (doc/benchmarks.md Case 11) for the three
 initial kinks, with explicit and predictor-corrector directions and Maximum
 advance 0.1, 0.05 and 0.025 on front cells of 0.012, and at 0.05 on cells
 half as large (both directions): the height of the path at x = 4.6, 5.0 and 5.4 (the ordering
@@ -324,7 +324,9 @@ def kink(args):
 
 
 def main():
-    parser = argparse.ArgumentParser()
+    parser = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("study",
                         choices=["paris", "advance", "cost", "dcb", "kink"])
     parser.add_argument("--jobs", type=int, default=1)

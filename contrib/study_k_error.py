@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Can K carry its own error estimate? (issue 16, part 2; doc/verification.md
 "K and its error: what the cheap estimates are worth").
 
@@ -12,7 +12,7 @@ goal-oriented one:
   K(2,4) = (K(2,3) + K(3,4)) / 2; the estimate is |K(2,3) - K(3,4)| / 2,
   the spread of two independent extractions about their mean;
 - jumps: |K_jump - K|, K_jump from the displacement jumps over the crown
-  (BENCHMARKS.md's cross-check);
+  (doc/benchmarks.md's cross-check);
 - dual: xcrack's own estimate (`Fracture parameters/Error estimate`,
   KErrorEstimator): signed, so its effectivity is (K_exact - K)_estimated /
   (K_exact - K), negative when it points the wrong way. Rows whose dual
@@ -153,7 +153,9 @@ def cost(runs=3):
 
 
 if __name__ == "__main__":
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--cost", action="store_true")
     arguments = parser.parse_args()

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The K error estimate along a 3D front (issue 16, part 2; doc/verification.md
 "K with a goal-oriented error estimate", the 3D part).
 
@@ -133,7 +133,9 @@ def main(meshes, jobs, crown_weight):
 
 
 if __name__ == "__main__":
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--meshes", type=int, default=5)
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--k-tolerance-penny", type=int, metavar="N")

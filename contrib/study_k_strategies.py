@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """K error against DoFs for every refinement strategy (issue 16; doc/
 verification.md, "K error against DoFs, strategy by strategy").
 
@@ -185,7 +185,9 @@ def draw(results):
 
 
 if __name__ == "__main__":
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--scenes", choices=["2d", "3d", "all"],
                         default="all")
     parser.add_argument("--jobs", type=int, default=2)

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Refinement to a K tolerance against uniform refinement (issue 16, part 3).
 
 For 2D benchmarks with a known K (topological tip enrichment, the crowns as
@@ -148,7 +148,9 @@ def picture(jobs):
 
 
 if __name__ == "__main__":
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--picture", action="store_true")
     parser.add_argument("--crown-weight", choices=["linear", "smooth"],

@@ -126,7 +126,9 @@ def lip_pressure(directory, mesh, angle):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--meshes", type=int, default=5)
     parser.add_argument("--plot-mesh", type=int, default=3,
                         help="the mesh whose pressures the figure draws")

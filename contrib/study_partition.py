@@ -1,7 +1,7 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """A 3D X-FEM solve on one rank and on two, the mesh shared among the ranks
 by cells or by work (`Parallel/Partition`): the phases of the last mesh of
-the penny of BENCHMARKS.md Case 5, their speed-up over one rank, the work
+the penny of doc/benchmarks.md Case 5, their speed-up over one rank, the work
 imbalance left (largest rank's work over the mean) and the K errors, which
 must not depend on the split.
 
@@ -52,7 +52,9 @@ def run(meshes, ranks, partition, gathered, work, solver_rows="balanced"):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--meshes", type=int, default=5)
     parser.add_argument("--gathered", action="store_true")

@@ -1,6 +1,6 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """K_I, K_II by the interaction integral on the 2D benchmarks with exact
-data (BENCHMARKS.md Cases 1 and 4): error against the exact K per mesh,
+data (doc/benchmarks.md Cases 1 and 4): error against the exact K per mesh,
 its convergence rate next to the energy rate, the independence of the
 crowns, and the wall time of the extraction against the solve.
 
@@ -47,7 +47,9 @@ def rate(rows, column, r):
 
 
 def main():
-    parser = argparse.ArgumentParser()
+    parser = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--meshes", type=int, default=6)
     parser.add_argument("--runs", type=int, default=3)
     args = parser.parse_args()

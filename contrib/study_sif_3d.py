@@ -1,5 +1,5 @@
-#!/usr/bin/env python3
-"""K along 3D fronts (BENCHMARKS.md Cases 5 and 6): the error of each K
+#!/usr/bin/python3
+"""K along 3D fronts (doc/benchmarks.md Cases 5 and 6): the error of each K
 against the reference per mesh of the benchmarks, the convergence of
 each front basis, and the cost and gain of each choice of the extraction
 (crowns, basis, front segments, tip rule) on the penny.
@@ -291,7 +291,9 @@ def rules(args):
 
 
 def main():
-    parser = argparse.ArgumentParser()
+    parser = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("study", choices=["convergence", "bases", "trade",
                                           "rules"])
     parser.add_argument("--meshes", type=int, default=6)

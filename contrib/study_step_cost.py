@@ -1,6 +1,6 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The cost of one 3D X-FEM solve by phase (setup, assembly, solve, K
-extraction) on a mesh of the penny of BENCHMARKS.md Case 5, for the current
+extraction) on a mesh of the penny of doc/benchmarks.md Case 5, for the current
 build and, to measure a change, a baseline build measured in the same
 invocation (runs alternate between the builds, so that a load that comes and
 goes hits both).
@@ -45,7 +45,9 @@ def run(binary, meshes, ranks, work, extra=""):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--baseline", help="directory with a baseline "
                         "build's xcrack and libxcrack_core.so")
     parser.add_argument("--runs", type=int, default=3)

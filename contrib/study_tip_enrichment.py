@@ -1,7 +1,7 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Speed/accuracy trade of the crack-tip enrichment (doc/performance.md).
 
-On BENCHMARKS.md Case 1 (prm/benchmarks/exact_mode_I_2d.prm, and the 3D
+On doc/benchmarks.md Case 1 (prm/benchmarks/exact_mode_I_2d.prm, and the 3D
 version on two ranks) this sweeps the enrichment radius (topological, then
 geometric radii in multiples of the cell size h and fixed), the points per
 direction of the tip rule, DOF gathering, and the degree, and prints for each choice the
@@ -80,7 +80,9 @@ def study(work, benchmark, meshes, ranks, repeats, h):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--meshes", type=int, default=5, help="2D meshes")
     args = parser.parse_args()

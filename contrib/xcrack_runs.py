@@ -86,3 +86,93 @@ def run_files(directory, regex):
     return sorted(os.path.join(directory, n) for n in names
                   if re.fullmatch(regex, n)
                   and os.path.exists(os.path.join(directory, n)))
+
+
+def read_vtu(path, arrays=("Points", "connectivity", "offsets")):
+    """The named data arrays of a VTU file (XML UnstructuredGrid) as lists
+    of numbers: "Points" (the coordinates, x y z after each other),
+    "connectivity" and "offsets" of the cells, or a field by its Name.
+    Reads the ASCII arrays xcrack's crack files hold and the zlib-compressed
+    binary ones deal.II's DataOut writes; nothing beyond Python's standard
+    library."""
+    import base64
+    import re
+    import struct
+    import zlib
+    with open(path) as f:
+        text = f.read()
+    compressed = 'compressor="vtkZLibDataCompressor"' in text
+    sizes = {"Float32": ("f", 4), "Float64": ("d", 8), "Int32": ("i", 4),
+             "Int64": ("q", 8), "UInt8": ("B", 1), "UInt32": ("I", 4),
+             "UInt64": ("Q", 8)}
+    result = {}
+    points = re.search(r"<Points>\s*<DataArray([^>]*)>(.*?)</DataArray>",
+                       text, re.S)
+    found = [("Points",) + points.groups()] if points else []
+    for attributes, body in re.findall(r"<DataArray([^>]*)>(.*?)</DataArray>",
+                                       text, re.S):
+        name = re.search(r'Name="([^"]*)"', attributes)
+        if name:
+            found.append((name.group(1), attributes, body))
+    for name, attributes, body in found:
+        if name not in arrays or name in result:
+            continue
+        kind = re.search(r'type="([^"]*)"', attributes).group(1)
+        if 'format="ascii"' in attributes:
+            values = [float(v) for v in body.split()]
+        else:
+            code, size = sizes[kind]
+            body = body.strip()
+            if compressed:
+                # A header of UInt32: blocks, block size, last block size,
+                # then each block's compressed size, base64 on its own;
+                # then the blocks, base64 together.
+                first = base64.b64decode(body[:24])
+                n_blocks = struct.unpack("<I", first[:4])[0]
+                header_length = 4 * (3 + n_blocks)
+                encoded = 4 * ((header_length + 2) // 3)
+                header = struct.unpack(f"<{3 + n_blocks}I",
+                                       base64.b64decode(body[:encoded]))
+                data = base64.b64decode(body[encoded:])
+                raw, at = b"", 0
+                for block in header[3:]:
+                    raw += zlib.decompress(data[at:at + block])
+                    at += block
+            else:
+                raw = base64.b64decode(body)[4:]
+            values = list(struct.unpack(f"<{len(raw) // size}{code}", raw))
+        result[name] = values
+    return result
+
+
+def body_outline(directory):
+    """The boundary of a 2D body as segments ((x0, y0), (x1, y1)), from the
+    first solution file of the run (every piece of its .pvtu): the edges of
+    its cells that no other cell shares. None without solution files (Output/
+    Write vtu = false) or in 3D."""
+    import re
+    pieces = run_files(directory, r"solution-.*\.vtu")
+    if not pieces:
+        return None
+    first = re.match(r"solution-([0-9.]+)\.[0-9]+\.vtu$",
+                     os.path.basename(pieces[0])).group(1)
+    count = {}
+    for path in pieces:
+        if f"solution-{first}." not in os.path.basename(path):
+            continue
+        data = read_vtu(path)
+        xyz = data["Points"]
+        if any(abs(z) > 0 for z in xyz[2::3]):
+            return None
+        point = [(round(xyz[3 * i], 12), round(xyz[3 * i + 1], 12))
+                 for i in range(len(xyz) // 3)]
+        start = 0
+        for end in data["offsets"]:
+            cell = [point[int(i)] for i in data["connectivity"][start:int(end)]]
+            start = int(end)
+            # deal.II's quadrilaterals list their corners in VTK's order,
+            # around the cell.
+            for a, b in zip(cell, cell[1:] + cell[:1]):
+                edge = (min(a, b), max(a, b))
+                count[edge] = count.get(edge, 0) + 1
+    return [edge for edge, n in count.items() if n == 1]
