@@ -18,23 +18,10 @@ Runs with the system Python (/usr/bin/python3, whose matplotlib
 contrib/install_dependencies.sh installs).
 """
 import argparse
-import csv
 import os
 import re
 
-from xcrack_runs import run_files
-
-
-def read(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
-
-
-def number(text, default=float("nan")):
-    try:
-        return float(text)
-    except (TypeError, ValueError):
-        return default
+from xcrack_runs import number, read_csv as read, run_files
 
 
 def key_of(path):

@@ -28,26 +28,11 @@ solution VTU files; runs with the system Python (/usr/bin/python3, whose
 matplotlib contrib/install_dependencies.sh installs).
 """
 import argparse
-import csv
-import json
-import math
 import os
 import re
-import sys
 
-from xcrack_runs import body_outline, read_vtu, run_files, run_record
-
-
-def read(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
-
-
-def number(text, default=float("nan")):
-    try:
-        return float(text)
-    except (TypeError, ValueError):
-        return default
+from xcrack_runs import (body_outline, number, read_csv as read, read_vtu,
+                         run_files, run_record)
 
 
 def steps(directory):

@@ -43,6 +43,22 @@ def run_xcrack(prm_text, work, ranks=1, binary=None):
         return list(csv.DictReader(f))
 
 
+def read_csv(path):
+    """The rows of a CSV file of a run (statistics.csv, front_*.csv) as
+    dictionaries by column."""
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def number(text, default=float("nan")):
+    """A cell as a number; `default` for an empty cell or a text (a
+    reason)."""
+    try:
+        return float(text)
+    except (TypeError, ValueError):
+        return default
+
+
 def k_errors(row, digits=3):
     """The K errors of a 3D statistics row against its reference, as text:
     what the timing studies print to show that a faster run solved the same
