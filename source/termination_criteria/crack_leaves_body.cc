@@ -1,12 +1,13 @@
 #include <deal.II/base/mpi.h>
 
-#include <deal.II/grid/grid_tools.h>
-#include <deal.II/grid/grid_tools_cache.h>
 
 #include <xcrack/crack/crack_surface.h>
 #include <xcrack/front_move.h>
 #include <xcrack/termination_criteria/crack_leaves_body.h>
 
+#include <array>
+#include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace xcrack
@@ -75,50 +76,93 @@ namespace xcrack
       return verdict;
     }
 
+    namespace
+    {
+      /**
+       * The distance along the unit direction @p d from @p x to the face
+       * of the boundary with vertices @p v (a segment in 2D; in 3D a
+       * quadrilateral, split into two triangles), or infinity if the ray
+       * misses it.
+       */
+      template <int dim>
+      double
+      ray_to_face(const Point<dim>              &x,
+                  const Tensor<1, dim>          &d,
+                  const std::vector<Point<dim>> &v)
+      {
+        double hit = std::numeric_limits<double>::infinity();
+        if constexpr (dim == 2)
+          {
+            // x + t d = v0 + s (v1 - v0), 0 <= s <= 1.
+            const Tensor<1, 2> e = v[1] - v[0], w = v[0] - x;
+            const double       det = d[1] * e[0] - d[0] * e[1];
+            if (std::abs(det) > 1e-14 * e.norm())
+              {
+                const double t  = (w[1] * e[0] - w[0] * e[1]) / det;
+                const double sv = (w[1] * d[0] - w[0] * d[1]) / det;
+                if (sv >= 0 && sv <= 1)
+                  hit = t;
+              }
+          }
+        else
+          // Moeller and Trumbore on the triangles (0, 1, 2) and (1, 3, 2)
+          // of deal.II's vertex order.
+          for (const std::array<unsigned int, 3> &t :
+               {std::array<unsigned int, 3>{{0, 1, 2}},
+                std::array<unsigned int, 3>{{1, 3, 2}}})
+            {
+              const Tensor<1, dim> e1 = v[t[1]] - v[t[0]],
+                                   e2 = v[t[2]] - v[t[0]];
+              const Tensor<1, dim> p  = cross_product_3d(d, e2);
+              const double         det = e1 * p;
+              if (std::abs(det) <= 1e-14 * e1.norm() * e2.norm())
+                continue;
+              const Tensor<1, dim> q = x - v[t[0]];
+              const double         a = (q * p) / det;
+              const Tensor<1, dim> r = cross_product_3d(q, e1);
+              const double         b = (d * r) / det;
+              if (a >= 0 && b >= 0 && a + b <= 1)
+                hit = std::min(hit, (e2 * r) / det);
+            }
+        return hit;
+      }
+    } // namespace
+
+
+
     template <int dim>
     double
     CrackLeavesBody<dim>::progress() const
     {
-      // Every rank holds the whole coarse mesh (its artificial cells): a
-      // point is inside the body if some active cell holds it, here.
-      const GridTools::Cache<dim> cache(this->get_triangulation());
-      typename Triangulation<dim>::active_cell_iterator hint;
-      const auto inside = [&](const Point<dim> &x) {
-        try
-          {
-            const auto found =
-              GridTools::find_active_cell_around_point(cache, x, hint);
-            // (The search may return the nearest cell of a point outside.)
-            if (found.first.state() != IteratorState::valid ||
-                !GeometryInfo<dim>::is_inside_unit_cell(found.second, 1e-10))
-              return false;
-            hint = found.first;
-            return true;
-          }
-        catch (...)
-          {
-            return false;
-          }
-      };
-      // At most a thousand steps ahead: beyond, the estimate is of no use.
-      constexpr unsigned int most = 1000;
-      unsigned int           left = most;
-      for (const FrontMove<dim> &m : this->get_front_moves())
-        {
-          if (!(m.advance > 0))
-            continue;
-          const Tensor<1, dim> d = m.direction() / m.direction().norm();
-          if (!inside(m.point.position + m.advance * d))
-            continue;
-          unsigned int k = 2;
-          while (k < left && inside(m.point.position + k * m.advance * d))
-            ++k;
-          left = std::min(left, k);
-        }
-      if (left == most)
+      // The steps left: for each moving point, the distance along its
+      // direction to the first boundary face ahead (holes included) over
+      // its advance; points on the boundary already (the ends of a surface
+      // crack's front) are left out.
+      double left = std::numeric_limits<double>::infinity();
+      for (const auto &cell : this->get_triangulation().active_cell_iterators())
+        if (cell->is_locally_owned() && cell->at_boundary())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                std::vector<Point<dim>> vertices;
+                for (const auto v : cell->face(f)->vertex_indices())
+                  vertices.push_back(cell->face(f)->vertex(v));
+                for (const FrontMove<dim> &m : this->get_front_moves())
+                  if (m.advance > 0)
+                    {
+                      const Tensor<1, dim> d =
+                        m.direction() / m.direction().norm();
+                      const double t =
+                        ray_to_face(m.point.position, d, vertices);
+                      if (t > 1e-6 * m.advance)
+                        left = std::min(left, t / m.advance);
+                    }
+              }
+      left = Utilities::MPI::min(left, this->get_mpi_communicator());
+      if (!std::isfinite(left))
         return 0;
       const double done = this->get_step() + 1;
-      return done / (done + left - 1);
+      return done / (done + std::max(left - 1, 0.));
     }
 
 

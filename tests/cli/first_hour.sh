@@ -12,7 +12,8 @@
 #   demo and getting_started scenes) without writing anything and stops a
 #   bad one with exit status 1;
 # - `-s` sets an entry (in the run, in parameters.prm and in run.json's
-#   overrides) and refuses one that does not exist;
+#   overrides) and refuses one that does not exist; the step lines say the
+#   time left;
 # - a point with three coordinates in a 2D scene is an error (unless the
 #   third is zero);
 # - contrib/plot_growth.py and plot_front.py run as commands on a growth
@@ -99,8 +100,10 @@ sed -i 's/0, 0.45, 0.5/0, 0.45, 0/' point.prm
 
 # --- A growth run whose crowns reach the boundary, set from the command line.
 demo=(-s "Output directory=grow" -s "Propagation/Number of steps=2"
-      -s "Fracture parameters/Crown radii=6, 12" -s "Output/Timing summary=false")
+      -s "Fracture parameters/Crown radii=6, 12")
 "$xcrack" "${demo[@]}" "$top/prm/demo.prm" > grow.log 2>&1 || { fail "growth run"; cat grow.log; }
+# (With the timing summary on, each step says the time left.)
+[ "$(grep -c '^Step [01]: .* s left)$' grow.log)" -eq 2 ] || { fail "no time left on the step lines"; cat grow.log; }
 grep -q "Unreliable: .* of the .* cycles" -i grow.log || { fail "no end summary of the flags"; cat grow.log; }
 "$xcrack" -s "Propagation/Maximum advanc=1" "$top/prm/demo.prm" > typo.log 2>&1
 [ $? -eq 1 ] && grep -q "Maximum advanc" typo.log || fail "-s with an entry that does not exist"

@@ -34,9 +34,10 @@ namespace xcrack
 
       /**
        * The steps done against those done plus those left until the first
-       * front point leaves the body, if each point keeps its direction and
-       * its advance per step (points already on the boundary, such as the
-       * ends of a surface crack's front, are left out).
+       * front point reaches the boundary (holes included), if each point
+       * keeps its direction and its advance per step (points already on
+       * the boundary, such as the ends of a surface crack's front, are
+       * left out). Collective.
        */
       double
       progress() const override;
