@@ -1,6 +1,5 @@
 #include <deal.II/base/mpi.h>
 
-
 #include <xcrack/crack/crack_surface.h>
 #include <xcrack/front_move.h>
 #include <xcrack/termination_criteria/crack_leaves_body.h>
@@ -111,9 +110,9 @@ namespace xcrack
                {std::array<unsigned int, 3>{{0, 1, 2}},
                 std::array<unsigned int, 3>{{1, 3, 2}}})
             {
-              const Tensor<1, dim> e1 = v[t[1]] - v[t[0]],
-                                   e2 = v[t[2]] - v[t[0]];
-              const Tensor<1, dim> p  = cross_product_3d(d, e2);
+              const Tensor<1, dim> e1  = v[t[1]] - v[t[0]],
+                                   e2  = v[t[2]] - v[t[0]];
+              const Tensor<1, dim> p   = cross_product_3d(d, e2);
               const double         det = e1 * p;
               if (std::abs(det) <= 1e-14 * e1.norm() * e2.norm())
                 continue;
