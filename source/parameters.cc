@@ -212,8 +212,8 @@ namespace xcrack
     /// Where a line of an expanded parameter file comes from.
     struct Origin
     {
-      /// The file as the user named it (on the command line, or the path
-      /// an include resolved to).
+      /// The file as the user named it (on the command line, or as the
+      /// include line names it).
       std::string  file;
       unsigned int line = 0;
 
