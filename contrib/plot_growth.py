@@ -58,25 +58,25 @@ def fronts(directory):
 def crack_lips(directory, step):
     """The lips of every crack at `step` (its last mesh): 2D segments or 3D
     polygons as lists of (x, y, z)."""
-    pieces = []
+    # Per crack (crack-, crack1-, crack2-, ...) the last file of the step:
+    # its last mesh (the names sort by mesh).
+    files = {}
     for path in run_files(directory, r"crack[0-9]*-.*\.vtu"):
-        match = re.match(r"crack[0-9]*-(\d+)(\.\d+)?\.vtu$",
+        match = re.match(r"(crack[0-9]*)-(\d+)(\.\d+)?\.vtu$",
                          os.path.basename(path))
-        if not match or int(match.group(1)) != step:
-            continue
-        # (Of a step on several meshes, the last file wins.)
+        if match and int(match.group(2)) == step:
+            files[match.group(1)] = path
+    lips = []
+    for path in files.values():
         data = read_vtu(path, ("Points", "connectivity", "offsets", "types"))
         xyz = data["Points"]
         start = 0
-        lips = []
         for end, kind in zip(data["offsets"], data["types"]):
             if int(kind) in (3, 7):
                 lips.append([tuple(xyz[3 * int(i):3 * int(i) + 3])
                              for i in data["connectivity"][start:int(end)]])
             start = int(end)
-        pieces = [p for p in pieces if p[0] != os.path.basename(path)[:6]]
-        pieces.append((os.path.basename(path)[:6], lips))
-    return [lip for _, lips in pieces for lip in lips]
+    return lips
 
 
 class Run:

@@ -306,6 +306,10 @@ namespace xcrack
     void
     solve_and_report(const unsigned int mesh, const unsigned int n_meshes);
 
+    /// The most meshes step @p step_of_solve is solved on (core.cc).
+    unsigned int
+    n_meshes_of(const unsigned int step_of_solve) const;
+
     /**
      * The name of the files of the solve on mesh @p mesh of step
      * @p step_of_solve: the step (`007`), or the step and the mesh

@@ -329,14 +329,9 @@ namespace xcrack
   bool
   Simulator<dim>::run_step(std::string &key)
   {
-    // Step 0 may be solved on several successively refined meshes (a
-    // convergence study of the initial crack); every step after it on the
-    // mesh its fronts adapted. A strategy with a goal refines every step
-    // until the goal is met, on at most Number of meshes.
-    const bool         goal = mesh_refinement->has_goal();
-    const unsigned int n_meshes =
-      (step == 0 || goal ? refinement_parameters.n_meshes : 1);
-    bool stop = false;
+    const bool         goal     = mesh_refinement->has_goal();
+    const unsigned int n_meshes = n_meshes_of(step);
+    bool               stop     = false;
     for (unsigned int mesh = 0; mesh < n_meshes; ++mesh)
       {
         if (mesh > 0)
@@ -376,16 +371,29 @@ namespace xcrack
 
 
   template <int dim>
+  unsigned int
+  Simulator<dim>::n_meshes_of(const unsigned int step_of_solve) const
+  {
+    // Step 0 may be solved on several successively refined meshes (a
+    // convergence study of the initial crack); every step after it on the
+    // mesh its fronts adapted. A strategy with a goal refines every step
+    // until the goal is met, on at most Number of meshes.
+    return (step_of_solve == 0 || mesh_refinement->has_goal() ?
+              refinement_parameters.n_meshes :
+              1);
+  }
+
+
+
+  template <int dim>
   std::string
   Simulator<dim>::solve_key(const unsigned int step_of_solve,
                             const unsigned int mesh) const
   {
-    const unsigned int n_meshes =
-      (step_of_solve == 0 || mesh_refinement->has_goal() ?
-         refinement_parameters.n_meshes :
-         1);
     return Utilities::int_to_string(step_of_solve, 3) +
-           (n_meshes > 1 ? "." + Utilities::int_to_string(mesh, 2) : "");
+           (n_meshes_of(step_of_solve) > 1 ?
+              "." + Utilities::int_to_string(mesh, 2) :
+              "");
   }
 
 

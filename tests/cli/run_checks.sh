@@ -165,7 +165,7 @@ for i in $(seq 1 600); do
   sleep 0.1
 done
 sleep "$(awk -v seed="$RANDOM" 'BEGIN { srand(seed); printf "%.2f", rand() * 3 }')"
-kill -9 "$pid" 2> /dev/null || fail "the long run ended before it could be killed"
+kill -9 "$pid" 2> /dev/null || { fail "the long run ended before it could be killed"; tail -20 long.log; }
 wait "$pid" 2> /dev/null
 grep -q '"status": "running"' out/run.json || fail "killed: run.json does not say running"
 stale="$(find out -maxdepth 1 -type f ! -newer marker)"
