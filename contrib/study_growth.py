@@ -6,7 +6,7 @@ for doc/verification.md and doc/performance.md.
     /usr/bin/python3 contrib/study_growth.py paris [--jobs 2]
     /usr/bin/python3 contrib/study_growth.py advance
     /usr/bin/python3 contrib/study_growth.py cost [--runs 3]
-    /usr/bin/python3 contrib/study_growth.py dcb [--jobs 2]
+    /usr/bin/python3 contrib/study_growth.py dcb [--jobs 2] [--update NAME]
     /usr/bin/python3 contrib/study_growth.py kink [--jobs 2]
 
 `paris`: prm/benchmarks/paris_center_2d.prm (Griffith centre crack,
@@ -25,8 +25,10 @@ to 5 front cells: the cycles against the closed form (332,671 cycles).
 initial kinks, with explicit and predictor-corrector directions and Maximum
 advance 0.1, 0.05 and 0.025 on front cells of 0.012, and at 0.05 on cells
 half as large (both directions): the height of the path at x = 4.6, 5.0 and 5.4 (the ordering
-of the kinks, the convergence in advance and mesh), where each run ended,
-and the figure doc/figures/dcb_paths.png.
+of the kinks, the convergence in advance and mesh), where each run ended
+and why, and the figure doc/figures/dcb_paths.png. `--update` selects the
+level-set update method (Propagation/Level set update/Model name; default
+geometric); other methods draw doc/figures/dcb_paths_<method>.png.
 
 `kink`: K_II / K_I at the tip of a kink of 10 degrees and length s at the
 end of the DCB's crack, on meshes refined around it (crowns of 2 to 4
@@ -39,9 +41,11 @@ update, refinement, checkpoint, output) on the 2D benchmark and on a coarse
 """
 import argparse
 import concurrent.futures
+import json
 import math
 import os
 import statistics
+import subprocess
 import sys
 import tempfile
 import time
@@ -193,26 +197,39 @@ def dcb(args):
                     "  end\nend\n"
                     f"subsection Propagation\n  set Maximum advance = {advance}\n"
                     f"  set Direction integration = {integration}\n"
-                    "  set Number of steps = 400\nend\n"
+                    "  set Number of steps = 400\n"
+                    "  subsection Level set update\n"
+                    f"    set Model name = {args.update}\n  end\nend\n"
                     f"subsection Mesh refinement\n  set Number of meshes = {levels + 1}\n"
                     f"  set Maximum level = {levels}\nend\n")
             start = time.time()
-            run_xcrack(text, work)
-            return variant, (tip_path(work), time.time() - start)
+            try:
+                run_xcrack(text, work)
+            except subprocess.CalledProcessError:
+                pass  # run.json says why
+            with open(os.path.join(work, "out", "run.json")) as f:
+                reason = json.load(f)["reason"]
+            return variant, (tip_path(work), time.time() - start, reason)
 
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         results = dict(pool.map(one, variants))
+    print(f"Level-set update: {args.update}\n")
     print("| theta0 (deg) | direction | advance | front cells h | y(4.6) | "
-          "y(5.0) | y(5.4) | last tip | wall time |")
-    print("|---|---|---|---|---|---|---|---|---|")
+          "y(5.0) | y(5.4) | last tip | end | wall time |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     for variant in variants:
         kink, integration, advance, levels = variant
-        path, seconds = results[variant]
+        path, seconds, reason = results[variant]
+        end = ("face" if "would leave the body" in reason or
+                         "cuts through" in reason else
+               "piece of crack" if "piece of crack" in reason else
+               "singular" if "singular" in reason else reason)
         heights = [height_at(path, x) for x in (4.6, 5.0, 5.4)]
         print(f"| {kink} | {integration} | {advance} | "
               f"{11.8 / 30 / 2 ** levels:.4f} | " +
               " | ".join("-" if y is None else f"{y:.3f}" for y in heights) +
-              f" | ({path[-1][0]:.2f}, {path[-1][1]:.2f}) | {seconds:.0f} s |")
+              f" | ({path[-1][0]:.2f}, {path[-1][1]:.2f}) | {end} "
+              f"| {seconds:.0f} s |")
     try:
         import matplotlib
         matplotlib.use("Agg")
@@ -223,7 +240,7 @@ def dcb(args):
     colours = {"1.43": "C0", "2.86": "C1", "5.71": "C2"}
     styles = {("explicit", 0.025): "--", ("predictor-corrector", 0.1): ":",
               ("predictor-corrector", 0.025): "-"}
-    for variant, (path, _) in results.items():
+    for variant, (path, _, _) in results.items():
         kink, integration, advance, levels = variant
         if (integration, advance) not in styles or levels != 5:
             continue
@@ -235,11 +252,13 @@ def dcb(args):
     ax.set_xlabel("x")
     ax.set_ylabel("y")
     ax.set_title(f"DCB: tip paths, front cells h = {11.8 / 30 / 32:.4f} "
-                 "(beam top at y = 1.97)")
+                 f"(beam top at y = 1.97), {args.update}")
     ax.legend(fontsize=6)
     ax.grid(True, lw=0.3)
     fig.tight_layout()
-    path = os.path.join(top, "doc", "figures", "dcb_paths.png")
+    name = ("dcb_paths.png" if args.update == "geometric" else
+            f"dcb_paths_{args.update.replace(' ', '_')}.png")
+    path = os.path.join(top, "doc", "figures", name)
     fig.savefig(path, dpi=120)
 
 
@@ -331,6 +350,8 @@ def main():
                         choices=["paris", "advance", "cost", "dcb", "kink"])
     parser.add_argument("--jobs", type=int, default=1)
     parser.add_argument("--runs", type=int, default=3)
+    parser.add_argument("--update", default="geometric",
+                        help="the level-set update method of `dcb`")
     args = parser.parse_args()
     {"paris": paris, "advance": advance, "cost": cost, "dcb": dcb,
      "kink": kink}[args.study](args)

@@ -33,7 +33,8 @@ namespace xcrack
     result_files()
     {
       static const std::regex names(
-        "front_.*\\.csv|crack[0-9]*-.*\\.vtu|crack\\.pvd|solution-.*\\.p?vtu|"
+        "front_.*\\.csv|crack[0-9]*-.*\\.vtu|crack_mesh[0-9]*-.*\\.vtu|"
+        "crack\\.pvd|solution-.*\\.p?vtu|"
         "solution\\.pvd|statistics\\.csv|parameters\\.prm");
       return names;
     }

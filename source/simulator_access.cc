@@ -1,3 +1,4 @@
+#include <xcrack/output_file.h>
 #include <xcrack/simulator.h>
 #include <xcrack/simulator_access.h>
 
@@ -135,6 +136,29 @@ namespace xcrack
   SimulatorAccess<dim>::lips_in_contact() const
   {
     return simulator->contact != nullptr;
+  }
+
+
+
+  template <int dim>
+  const std::string &
+  SimulatorAccess<dim>::get_output_directory() const
+  {
+    return simulator->run_parameters.output_directory;
+  }
+
+
+
+  template <int dim>
+  void
+  SimulatorAccess<dim>::write_output_file(
+    const std::string                         &name,
+    const std::function<void(std::ostream &)> &write) const
+  {
+    if (Utilities::MPI::this_mpi_process(simulator->mpi_communicator) != 0)
+      return;
+    write_file(simulator->run_parameters.output_directory + "/" + name, write);
+    simulator->run_record->add_file(name);
   }
 
 

@@ -12,7 +12,9 @@
 #include <xcrack/parsed_function.h>
 #include <xcrack/plugins.h>
 
+#include <functional>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -132,6 +134,16 @@ namespace xcrack
     /// `none`): without it, lips may pass through each other.
     bool
     lips_in_contact() const;
+
+    /// Where the run writes its files (`Output directory`).
+    const std::string &
+    get_output_directory() const;
+
+    /// Write @p name in the output directory with @p write (rank 0, through
+    /// write_file(): whole or not at all) and list it in run.json.
+    void
+    write_output_file(const std::string                         &name,
+                      const std::function<void(std::ostream &)> &write) const;
 
     /// The propagation step of the current solve (0: the initial crack).
     unsigned int

@@ -10,6 +10,7 @@
 #include <xcrack/xfem/cell_quadrature.h>
 
 #include <algorithm>
+#include <boost/serialization/utility.hpp>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -608,6 +609,25 @@ namespace xcrack
     if (n.norm() == 0)
       return n;
     return (reference * gradient < 0 ? -1. : 1.) * n / n.norm();
+  }
+
+
+
+  template <int dim>
+  std::vector<std::pair<std::vector<Point<dim>>, Tensor<1, dim>>>
+  CrackSurface<dim>::lips() const
+  {
+    std::vector<std::pair<std::vector<Point<dim>>, Tensor<1, dim>>> local;
+    for (const Piece &piece : pieces)
+      {
+        const Tensor<1, dim> n = real_normal(piece);
+        if (n.norm() > 0)
+          local.emplace_back(piece.real, n);
+      }
+    std::vector<std::pair<std::vector<Point<dim>>, Tensor<1, dim>>> all;
+    for (const auto &part : Utilities::MPI::all_gather(communicator, local))
+      all.insert(all.end(), part.begin(), part.end());
+    return all;
   }
 
 

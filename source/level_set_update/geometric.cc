@@ -5,6 +5,7 @@
 
 #include <xcrack/crack/crack_surface.h>
 #include <xcrack/input_error.h>
+#include <xcrack/level_set_update/front_track.h>
 #include <xcrack/level_set_update/geometric.h>
 #include <xcrack/xfem/enrichment.h>
 
@@ -48,28 +49,6 @@ namespace xcrack
 
     template <int dim>
     double
-    Geometric<dim>::front_cell_size(const LevelSetFields<dim> &fields,
-                                    const unsigned int         crack) const
-    {
-      // The largest cell at the front: a vertex nearer to it than the
-      // cell's diameter.
-      const std::vector<double> lsn = fields.vertex_values(crack, true);
-      const std::vector<double> lst = fields.vertex_values(crack, false);
-      double                    h   = 0;
-      for (const auto &cell :
-           fields.get_dof_handler().get_triangulation().active_cell_iterators())
-        if (cell->is_locally_owned())
-          for (const unsigned int v : cell->vertex_indices())
-            if (std::hypot(lsn[cell->vertex_index(v)],
-                           lst[cell->vertex_index(v)]) < cell->diameter())
-              h = std::max(h, cell->diameter());
-      return Utilities::MPI::max(h, this->get_mpi_communicator());
-    }
-
-
-
-    template <int dim>
-    double
     Geometric<dim>::band(const double h, const double largest_advance) const
     {
       if (band_radius > 0)
@@ -82,167 +61,22 @@ namespace xcrack
 
 
 
-    namespace
-    {
-      /// What moves at a point of a front: the kink, the advance and the
-      /// frame of K there (smooth along the front, unlike the frames of
-      /// the extracted points, which carry the noise of the level sets'
-      /// gradients).
-      template <int dim>
-      struct Sample
-      {
-        double         angle = 0, advance = 0;
-        Tensor<1, dim> e1, e2;
-
-        Sample
-        operator*(const double w) const
-        {
-          return {angle * w, advance * w, e1 * w, e2 * w};
-        }
-
-        Sample
-        operator+(const Sample &other) const
-        {
-          return {angle + other.angle,
-                  advance + other.advance,
-                  e1 + other.e1,
-                  e2 + other.e2};
-        }
-      };
-
-
-
-      /// The moves along one front, by abscissa.
-      template <int dim>
-      struct Track
-      {
-        std::vector<double>      s;
-        std::vector<Sample<dim>> samples;
-        bool                     closed = false;
-        double                   length = 0;
-
-        /// The sample at abscissa @p x: linear between the points, periodic
-        /// on a closed front, constant beyond the ends of an open one.
-        Sample<dim>
-        at(double x) const
-        {
-          if (s.empty())
-            return {};
-          if (s.size() == 1)
-            return samples[0];
-          if (closed)
-            {
-              x = std::fmod(x - s[0], length);
-              if (x < 0)
-                x += length;
-              x += s[0];
-              // Between the last point and the first one, across s = L.
-              if (x > s.back())
-                {
-                  const double w = (x - s.back()) / (s[0] + length - s.back());
-                  return samples.back() * (1 - w) + samples[0] * w;
-                }
-            }
-          if (x <= s.front())
-            return samples.front();
-          if (x >= s.back())
-            return samples.back();
-          const unsigned int k =
-            std::upper_bound(s.begin(), s.end(), x) - s.begin() - 1;
-          const double w = (x - s[k]) / (s[k + 1] - s[k]);
-          return samples[k] * (1 - w) + samples[k + 1] * w;
-        }
-      };
-
-
-
-      /// The point of @p fronts nearest to @p x: (front, abscissa, point).
-      template <int dim>
-      std::tuple<unsigned int, double, Point<dim>>
-      project(const std::vector<std::vector<FrontPoint<dim>>> &fronts,
-              const Point<dim>                                &x)
-      {
-        double       distance = std::numeric_limits<double>::max();
-        unsigned int front    = 0;
-        double       s        = 0;
-        Point<dim>   nearest;
-        for (unsigned int f = 0; f < fronts.size(); ++f)
-          {
-            const auto &points = fronts[f];
-            // A 2D tip is a front of one point; else its segments.
-            for (unsigned int k = 0; k + (points.size() > 1 ? 1 : 0) <
-                                     std::max<std::size_t>(points.size(), 1);
-                 ++k)
-              {
-                const FrontPoint<dim> &a = points[k];
-                const FrontPoint<dim> &b =
-                  (points.size() > 1 ? points[k + 1] : points[k]);
-                const Tensor<1, dim> edge = b.position - a.position;
-                const double         w =
-                  (edge.norm_square() > 0 ?
-                     std::clamp((x - a.position) * edge / edge.norm_square(),
-                                0.,
-                                1.) :
-                     0.);
-                const Point<dim> y = a.position + w * edge;
-                if (x.distance(y) < distance)
-                  {
-                    distance = x.distance(y);
-                    front    = f;
-                    s        = (1 - w) * a.s + w * b.s;
-                    nearest  = y;
-                  }
-              }
-          }
-        return {front, s, nearest};
-      }
-    } // namespace
-
-
-
     template <int dim>
     void
     Geometric<dim>::update(const unsigned int                 crack,
                            const std::vector<FrontMove<dim>> &moves,
-                           LevelSetFields<dim>               &fields) const
+                           LevelSetFields<dim>               &fields)
     {
       // The moves of each front of the crack, by abscissa.
       const auto &fronts = this->get_crack_surfaces()[crack].fronts();
-      std::vector<Track<dim>> tracks(fronts.size());
-      double                  largest = 0;
-      for (const FrontMove<dim> &m : moves)
-        if (m.crack == crack)
-          {
-            AssertIndexRange(m.front, fronts.size());
-            tracks[m.front].s.push_back(m.point.s);
-            tracks[m.front].samples.push_back(
-              {m.angle, m.advance, m.point.e1, m.point.e2});
-            largest = std::max(largest, m.advance);
-          }
+      double      largest;
+      const std::vector<Track<dim>> tracks =
+        make_tracks(crack, moves, fronts, largest);
       if (largest == 0)
         return;
-      for (unsigned int f = 0; f < fronts.size(); ++f)
-        {
-          Track<dim>               &t = tracks[f];
-          std::vector<unsigned int> order(t.s.size());
-          for (unsigned int k = 0; k < order.size(); ++k)
-            order[k] = k;
-          std::sort(order.begin(), order.end(), [&](auto a, auto b) {
-            return t.s[a] < t.s[b];
-          });
-          Track<dim> sorted;
-          for (const unsigned int k : order)
-            {
-              sorted.s.push_back(t.s[k]);
-              sorted.samples.push_back(t.samples[k]);
-            }
-          sorted.closed = (fronts[f].size() > 2 && fronts[f].front().position ==
-                                                     fronts[f].back().position);
-          sorted.length = fronts[f].back().s;
-          t             = sorted;
-        }
 
-      const double           h           = front_cell_size(fields, crack);
+      const double h =
+        front_cell_size(fields, crack, this->get_mpi_communicator());
       const double           radius      = band(h, largest);
       const DoFHandler<dim> &dof_handler = fields.get_dof_handler();
       std::map<types::global_dof_index, Point<dim>> support;

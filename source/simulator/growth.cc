@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <map>
 #include <sstream>
 #include <tuple>
 
@@ -378,6 +379,11 @@ namespace xcrack
     const std::vector<CrackSurface<dim>> surfaces  = crack_surfaces;
     const bool                           moved     = cracks_moved;
     const std::vector<FrontMove<dim>>    predictor = front_moves;
+    // Plugins that keep state across steps (a crack surface) forget the
+    // trial as the fields do.
+    std::map<std::string, Plugins::State> plugin_states;
+    for (const auto &[key, plugin] : plugins())
+      plugin->save(plugin_states[key]);
     {
       TimerOutput::Scope t(*timer, "levelset");
       propagation.update_level_sets(front_moves, level_sets);
@@ -403,6 +409,8 @@ namespace xcrack
 
     for (unsigned int c = 0; c < level_sets.n_cracks(); ++c)
       level_sets.set(c, lsn[c], lst[c]);
+    for (const auto &[key, plugin] : plugins())
+      plugin->load(plugin_states[key]);
     front_values   = values;
     crack_surfaces = surfaces;
     cracks_moved   = moved;

@@ -13,68 +13,6 @@ namespace xcrack
 {
   namespace TerminationCriteria
   {
-    template <int dim>
-    Verdict
-    CrackLeavesBody<dim>::check()
-    {
-      Verdict     verdict;
-      const auto &surfaces = this->get_crack_surfaces();
-      if (n_fronts.empty())
-        for (const auto &surface : surfaces)
-          n_fronts.push_back(surface.fronts().size());
-      for (unsigned int c = 0; c < surfaces.size(); ++c)
-        if (surfaces[c].fronts().size() != n_fronts[c])
-          {
-            std::ostringstream reason;
-            reason << "crack " << c + 1 << " now has "
-                   << surfaces[c].fronts().size()
-                   << (dim == 2 ? " tips" : " fronts") << " instead of "
-                   << n_fronts[c];
-            // A 2D crack gains tips only through a new piece: one the
-            // level sets made inside the body, where there is none.
-            if (dim == 2 && surfaces[c].fronts().size() > n_fronts[c])
-              {
-                reason << ": a piece of crack appeared inside the body (tips";
-                for (const auto &front : surfaces[c].fronts())
-                  reason << " (" << front[0].position << ")";
-                reason << "); the level-set update lost the crack's shape "
-                          "(a crack that turned strongly)";
-              }
-            else
-              reason << ": it reached the surface of the body";
-            verdict.stop   = true;
-            verdict.reason = reason.str();
-            return verdict;
-          }
-      if (dim == 3)
-        return verdict;
-      // A 2D tip that the next advance would put outside the body.
-      for (const FrontMove<dim> &m : this->get_front_moves())
-        {
-          if (m.advance == 0)
-            continue;
-          const Point<dim> x      = m.new_position();
-          bool             inside = false;
-          for (const auto &cell :
-               this->get_triangulation().active_cell_iterators())
-            if (cell->is_locally_owned() && cell->point_inside(x))
-              {
-                inside = true;
-                break;
-              }
-          if (!Utilities::MPI::logical_or(inside, this->get_mpi_communicator()))
-            {
-              std::ostringstream reason;
-              reason << "the tip of crack " << m.crack + 1 << " at ("
-                     << m.point.position << ") would leave the body";
-              verdict.stop   = true;
-              verdict.reason = reason.str();
-              return verdict;
-            }
-        }
-      return verdict;
-    }
-
     namespace
     {
       /**
@@ -126,6 +64,104 @@ namespace xcrack
         return hit;
       }
     } // namespace
+
+
+
+    template <int dim>
+    Verdict
+    CrackLeavesBody<dim>::check()
+    {
+      Verdict     verdict;
+      const auto &surfaces = this->get_crack_surfaces();
+      if (n_fronts.empty())
+        for (const auto &surface : surfaces)
+          n_fronts.push_back(surface.fronts().size());
+      for (unsigned int c = 0; c < surfaces.size(); ++c)
+        if (surfaces[c].fronts().size() != n_fronts[c])
+          {
+            std::ostringstream reason;
+            reason << "crack " << c + 1 << " now has "
+                   << surfaces[c].fronts().size()
+                   << (dim == 2 ? " tips" : " fronts") << " instead of "
+                   << n_fronts[c];
+            // A 2D crack gains tips only through a new piece: one the
+            // level sets made inside the body, where there is none.
+            if (dim == 2 && surfaces[c].fronts().size() > n_fronts[c])
+              {
+                reason << ": a piece of crack appeared inside the body (tips";
+                for (const auto &front : surfaces[c].fronts())
+                  reason << " (" << front[0].position << ")";
+                reason << "); the level-set update lost the crack's shape "
+                          "(a crack that turned strongly)";
+              }
+            else
+              reason << ": it reached the surface of the body";
+            verdict.stop   = true;
+            verdict.reason = reason.str();
+            return verdict;
+          }
+      if (dim == 3)
+        return verdict;
+      // A 2D tip that the next advance would put outside the body.
+      for (const FrontMove<dim> &m : this->get_front_moves())
+        {
+          if (m.advance == 0)
+            continue;
+          const MPI_Comm   comm = this->get_mpi_communicator();
+          const Point<dim> x    = m.new_position();
+          double           h    = -1;
+          for (const auto &cell :
+               this->get_triangulation().active_cell_iterators())
+            if (cell->is_locally_owned() && cell->point_inside(x))
+              {
+                h = cell->diameter();
+                break;
+              }
+          h = Utilities::MPI::max(h, comm);
+          if (h < 0)
+            {
+              std::ostringstream reason;
+              reason << "the tip of crack " << m.crack + 1 << " at ("
+                     << m.point.position << ") would leave the body";
+              verdict.stop   = true;
+              verdict.reason = reason.str();
+              return verdict;
+            }
+          // A ligament ahead of the new tip shorter than its cell is cut
+          // through by the discrete crack: the part it holds comes loose and
+          // the next system is singular. The crack has reached the surface.
+          const Tensor<1, dim> d        = m.direction() / m.direction().norm();
+          double               ligament = std::numeric_limits<double>::max();
+          for (const auto &cell :
+               this->get_triangulation().active_cell_iterators())
+            if (cell->is_locally_owned() && cell->at_boundary())
+              for (const auto f : cell->face_indices())
+                if (cell->face(f)->at_boundary())
+                  {
+                    std::vector<Point<dim>> vertices;
+                    for (const auto v : cell->face(f)->vertex_indices())
+                      vertices.push_back(cell->face(f)->vertex(v));
+                    const double t = ray_to_face(x, d, vertices);
+                    if (t >= 0)
+                      ligament = std::min(ligament, t);
+                  }
+          ligament = Utilities::MPI::min(ligament, comm);
+          if (ligament < h)
+            {
+              std::ostringstream reason;
+              reason << "the tip of crack " << m.crack + 1 << " at ("
+                     << m.point.position
+                     << ") would come within a cell of the body's surface "
+                        "(ligament "
+                     << ligament << " < cell " << h
+                     << "): the crack cuts through";
+              verdict.stop   = true;
+              verdict.reason = reason.str();
+              return verdict;
+            }
+        }
+      return verdict;
+    }
 
 
 
@@ -185,7 +221,8 @@ namespace xcrack
     XCRACK_REGISTER_PLUGIN(Interface,
                            CrackLeavesBody,
                            "crack leaves body",
-                           "a 2D tip would leave the body, or a crack's "
-                           "fronts change in number.")
+                           "a 2D tip would leave the body or come within a "
+                           "cell of its surface, or a crack's fronts change "
+                           "in number.")
   } // namespace TerminationCriteria
 } // namespace xcrack

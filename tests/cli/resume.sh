@@ -4,8 +4,10 @@
 # the same statistics.csv (every column but the wall times) and the same
 # front files as the run left alone: to the last digit on one rank, to
 # round-off (1e-12 of the largest value in each row) on two. (The scenes:
-# tests/growth_center_2d, and tests/cli/growth_friction_2d.prm, whose lips
-# close and slip against friction at the minimum of each step.)
+# tests/growth_center_2d; tests/cli/growth_friction_2d.prm, whose lips
+# close and slip against friction at the minimum of each step; and
+# tests/cli/growth_crack_mesh_2d.prm, whose level-set update keeps the
+# crack surface as state of its own.)
 #
 #   resume.sh XCRACK_EXECUTABLE SCENE.prm
 set -u

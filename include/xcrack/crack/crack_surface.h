@@ -60,6 +60,14 @@ namespace xcrack
     double
     front_length() const;
 
+    /**
+     * The lip pieces of all ranks (collective), each as its corners (a
+     * segment in 2D, a polygon in its order in 3D) and its unit normal to
+     * the lsn > 0 side; pieces of no extent are left out.
+     */
+    std::vector<std::pair<std::vector<Point<dim>>, Tensor<1, dim>>>
+    lips() const;
+
     /// Area of the lips (3D) or length of the crack (2D), over all ranks.
     double
     measure() const;

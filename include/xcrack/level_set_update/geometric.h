@@ -59,14 +59,9 @@ namespace xcrack
       void
       update(const unsigned int                 crack,
              const std::vector<FrontMove<dim>> &moves,
-             LevelSetFields<dim>               &fields) const override;
+             LevelSetFields<dim>               &fields) override;
 
     private:
-      /// The largest diameter of the cells at the front of crack @p crack.
-      double
-      front_cell_size(const LevelSetFields<dim> &fields,
-                      const unsigned int         crack) const;
-
       /**
        * The band radius of a step whose largest advance is
        * @p largest_advance, with front cells of size @p h: `Band radius`,

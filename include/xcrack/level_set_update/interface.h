@@ -24,10 +24,13 @@ namespace xcrack
    * angle and the advance), the new lsn and lst on the current mesh. The
    * crack surface behind the old front must stay where it was.
    *
-   * The seed's four methods fit here: `geometric` (implemented), and
-   * `upwind` (Hamilton-Jacobi on an auxiliary grid), `simplex` (the same on
-   * a simplicial split) and `crack mesh` (an explicit surface extended by
-   * the advance), each one more file pair.
+   * The seed's four methods fit here: `geometric` (the nodes near the
+   * front projected on it), `crack mesh` (an explicit surface extended by
+   * the advance), and to come `upwind` (Hamilton-Jacobi on an auxiliary
+   * grid) and `simplex` (the same on a simplicial split), each one more
+   * file pair. What they share (the moves along a front by abscissa, the
+   * projection on a front) is in front_track.h. A method that keeps state
+   * across steps (a surface) saves and loads it with the checkpoint.
    */
   namespace LevelSetUpdate
   {
@@ -43,7 +46,7 @@ namespace xcrack
       virtual void
       update(const unsigned int                 crack,
              const std::vector<FrontMove<dim>> &moves,
-             LevelSetFields<dim>               &fields) const = 0;
+             LevelSetFields<dim>               &fields) = 0;
     };
 
 

@@ -12,7 +12,10 @@ namespace xcrack
   {
     /**
      * `crack leaves body`: the run ends when a 2D tip would be moved out of
-     * the body by the next advance, or when a crack's fronts change in
+     * the body by the next advance, or to within its cell of the body's
+     * surface along its direction (a ligament the Q1 level sets cut
+     * through: the piece it holds would come loose and the system be
+     * singular), or when a crack's fronts change in
      * number (a tip or a piece of front reached the surface: the body is
      * split or the crack has broken through a wall; or, in 2D, the crack
      * gained a piece that the level sets made inside the body).

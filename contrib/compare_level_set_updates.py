@@ -1,0 +1,143 @@
+#!/usr/bin/python3
+"""The same growths with each level-set update method, side by side, as a
+markdown table for doc/verification/level-set-update.md.
+
+    contrib/build.sh release
+    /usr/bin/python3 contrib/compare_level_set_updates.py [--jobs 2]
+        [--scenes paris_center_2d,dcb_2d,...] [--methods geometric,crack mesh]
+
+Each shipped scene of prm/benchmarks/ (default: paris_center_2d, dcb_2d,
+paris_ellipse_3d, mixed_mode_3pb_3d, surface_crack_3d; paris_penny_3d takes
+18 minutes a method) runs once per method (`-s Propagation/Level set
+update/Model name=...`). Per run: the steps, the cycles, how it ended, the
+wall time, the time of the level-set updates (absolute and as a share of
+the wall time), and the distance of its last front to the first method's
+front of the same step (the largest over its points of the distance to the
+nearest point of the other front), in front cells (the diameter the run
+prints for its growth level) and absolute. A closed form of the cycles is
+given where there is one (paris_center_2d: Griffith, 776,634 cycles).
+"""
+import argparse
+import concurrent.futures
+import csv
+import glob
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from xcrack_runs import top, xcrack  # noqa: E402
+
+CLOSED_FORMS = {"paris_center_2d": 776634.444}
+
+
+def run(scene, method, work):
+    """Run the scene with the method into work/out; return what the table
+    needs."""
+    out = os.path.join(work, "out")
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
+    start = time.time()
+    result = subprocess.run(
+        [xcrack, "-s", f"Output directory={out}",
+         "-s", "Output/Timing summary=false", "-s", "Output/Write vtu=false",
+         "-s", f"Propagation/Level set update/Model name={method}",
+         os.path.join(top, "prm", "benchmarks", scene + ".prm")],
+        env=env, capture_output=True, text=True)
+    wall = time.time() - start
+    with open(os.path.join(out, "statistics.csv")) as f:
+        rows = list(csv.DictReader(f))
+    with open(os.path.join(out, "run.json")) as f:
+        reason = json.load(f)["reason"]
+    match = re.search(r"diameter ([0-9.eE+-]+)\)", result.stdout)
+    fronts = {}
+    for path in glob.glob(os.path.join(out, "front_*.csv")):
+        m = re.match(r"front_(\d+)(\.\d+)?\.csv$", os.path.basename(path))
+        if m:
+            with open(path) as f:
+                points = [tuple(float(r[c]) for c in ("x", "y", "z"))
+                          for r in csv.DictReader(f)]
+            # Of a step on several meshes, the last one.
+            key = int(m.group(1))
+            if key not in fronts or path > fronts[key][0]:
+                fronts[key] = (path, points)
+    return {
+        "steps": max(int(r["step"]) for r in rows),
+        "cycles": float(rows[-1]["cycles"]),
+        "reason": reason,
+        "wall": wall,
+        "levelset": sum(float(r["t_levelset"] or 0) for r in rows),
+        "h": float(match.group(1)) if match else float("nan"),
+        "fronts": {k: v[1] for k, v in fronts.items()},
+        "failed": result.returncode != 0,
+    }
+
+
+def short(reason):
+    for key, text in (("would leave the body", "tip at the surface"),
+                      ("cuts through", "tip at the surface"),
+                      ("piece of crack", "piece of crack"),
+                      ("reached the surface", "front at the surface"),
+                      ("Maximum crack size", "crack size"),
+                      ("last step", "last step"),
+                      ("singular", "singular system")):
+        if key in reason:
+            return text
+    return reason[:60]
+
+
+def distance(a, b):
+    """The largest distance of a point of front a to the nearest of b."""
+    return max(min(math.dist(p, q) for q in b) for p in a)
+
+
+def main():
+    parser = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--jobs", type=int, default=1)
+    parser.add_argument("--scenes", default="paris_center_2d,dcb_2d,"
+                        "paris_ellipse_3d,mixed_mode_3pb_3d,surface_crack_3d")
+    parser.add_argument("--methods", default="geometric,crack mesh")
+    args = parser.parse_args()
+    scenes = args.scenes.split(",")
+    methods = args.methods.split(",")
+
+    def one(job):
+        scene, method = job
+        with tempfile.TemporaryDirectory() as work:
+            return job, run(scene, method, work)
+
+    jobs = [(s, m) for s in scenes for m in methods]
+    with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+        results = dict(pool.map(one, jobs))
+
+    print("| scene | method | steps | cycles | closed form | end | "
+          "last front to the first method's | wall | level-set update |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for scene in scenes:
+        first = results[(scene, methods[0])]
+        for method in methods:
+            r = results[(scene, method)]
+            closed = CLOSED_FORMS.get(scene)
+            closed = (f"{(r['cycles'] / closed - 1) * 100:+.2f} %"
+                      if closed else "-")
+            gap = "-"
+            if method != methods[0]:
+                common = min(r["steps"], first["steps"])
+                if common in r["fronts"] and common in first["fronts"]:
+                    d = distance(r["fronts"][common], first["fronts"][common])
+                    gap = (f"{d / r['h']:.2f} cells ({d:.3g}) at step "
+                           f"{common}")
+            print(f"| {scene} | {method} | {r['steps']} | {r['cycles']:.5g} "
+                  f"| {closed} | {short(r['reason'])} | {gap} | "
+                  f"{r['wall']:.0f} s | {r['levelset']:.2f} s "
+                  f"({r['levelset'] / r['wall'] * 100:.1f} %) |")
+
+
+if __name__ == "__main__":
+    main()
