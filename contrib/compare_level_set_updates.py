@@ -13,7 +13,7 @@ update/Model name=...`). Per run: the steps, the cycles, how it ended, the
 wall time, the time of the level-set updates (absolute and as a share of
 the wall time), and the distance of its last front to the first method's
 front of the same step (the largest over its points of the distance to the
-nearest point of the other front), in front cells (the diameter the run
+polyline of the other front), in front cells (the diameter the run
 prints for its growth level) and absolute. A closed form of the cycles is
 given where there is one (paris_center_2d: Griffith, 776,634 cycles).
 """
@@ -59,8 +59,12 @@ def run(scene, method, work):
         m = re.match(r"front_(\d+)(\.\d+)?\.csv$", os.path.basename(path))
         if m:
             with open(path) as f:
-                points = [tuple(float(r[c]) for c in ("x", "y", "z"))
-                          for r in csv.DictReader(f)]
+                # Per front (its column), its points in order.
+                points = {}
+                for r in csv.DictReader(f):
+                    points.setdefault(r["front"], []).append(
+                        tuple(float(r[c]) for c in ("x", "y", "z")))
+                points = list(points.values())
             # Of a step on several meshes, the last one.
             key = int(m.group(1))
             if key not in fronts or path > fronts[key][0]:
@@ -91,8 +95,21 @@ def short(reason):
 
 
 def distance(a, b):
-    """The largest distance of a point of front a to the nearest of b."""
-    return max(min(math.dist(p, q) for q in b) for p in a)
+    """The largest distance of a point of the fronts a to the nearest front
+    of b, a polyline through its points in their order (a 2D tip: the
+    point)."""
+    def to_segment(p, u, v):
+        e = [y - x for x, y in zip(u, v)]
+        length = sum(c * c for c in e)
+        w = 0 if length == 0 else max(0, min(1, sum(
+            (x - y) * c for x, y, c in zip(p, u, e)) / length))
+        return math.dist(p, [x + w * c for x, c in zip(u, e)])
+
+    def to_front(p, front):
+        return min([math.dist(p, front[0])] +
+                   [to_segment(p, u, v) for u, v in zip(front, front[1:])])
+    return max(min(to_front(p, front) for front in b)
+               for front in a for p in front)
 
 
 def main():

@@ -4,6 +4,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <xcrack/crack/crack_set.h>
+#include <xcrack/crack/facet_crack.h>
 #include <xcrack/crack/mesh_crack.h>
 #include <xcrack/input_error.h>
 #include <xcrack/parsed_function.h>
@@ -102,9 +103,11 @@ namespace xcrack
             "Mesh: the crack surface, triangles or quadrilaterals in 3D, "
             "line segments in 2D, in a Gmsh (.msh, ASCII 2.2 or 4.1) or "
             "legacy VTK (.vtk, ASCII) file. Its boundary is the front where "
-            "it lies inside the body and a mouth elsewhere. A relative path "
-            "is taken from the directory of the parameter file that sets "
-            "it.");
+            "it lies inside the body and a mouth elsewhere. Or the surface "
+            "an earlier run's `crack mesh` level-set update wrote "
+            "(crack_mesh-<step>.vtu): its facets and fronts as they were, "
+            "and that update grows it on. A relative path is taken from the "
+            "directory of the parameter file that sets it.");
           prm.declare_entry(
             "Level set band",
             "0",
@@ -122,6 +125,15 @@ namespace xcrack
 
   namespace
   {
+    /// Whether @p file_name is a surface the `crack mesh` update wrote (a
+    /// .vtu file).
+    bool
+    is_facet_file(const std::string &file_name)
+    {
+      return file_name.size() > 4 &&
+             file_name.compare(file_name.size() - 4, 4, ".vtu") == 0;
+    }
+
     /// The crack described by the current subsection of @p prm; @p name
     /// prefixes the entries in error messages.
     template <int dim>
@@ -133,6 +145,9 @@ namespace xcrack
     create_crack(ParameterHandler &prm, const std::string &name)
     {
       const std::string shape = prm.get("Shape");
+      if (shape == "mesh" && is_facet_file(prm.get("File name")))
+        return std::make_unique<FacetCrack<2>>(prm.get("File name"),
+                                               name + "File name");
       if (shape == "mesh")
         return std::make_unique<MeshCrack<2>>(prm.get("File name"),
                                               name + "File name",
@@ -162,6 +177,9 @@ namespace xcrack
       check_input(shape != "segment",
                   name + "Shape = segment: a 3D run needs a surface "
                          "(half plane, penny, ellipse, rectangle, mesh).");
+      if (shape == "mesh" && is_facet_file(prm.get("File name")))
+        return std::make_unique<FacetCrack<3>>(prm.get("File name"),
+                                               name + "File name");
       if (shape == "mesh")
         return std::make_unique<MeshCrack<3>>(prm.get("File name"),
                                               name + "File name",

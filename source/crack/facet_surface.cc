@@ -1,14 +1,17 @@
 #include <deal.II/base/bounding_box.h>
 
 #include <xcrack/crack/facet_surface.h>
+#include <xcrack/input_error.h>
 
 #include <algorithm>
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
 #include <cmath>
 #include <iomanip>
+#include <iterator>
 #include <limits>
 #include <ostream>
+#include <sstream>
 
 namespace xcrack
 {
@@ -427,7 +430,7 @@ namespace xcrack
           << "<UnstructuredGrid>\n"
           << "<Piece NumberOfPoints=\"" << points.size()
           << "\" NumberOfCells=\"" << cells.size() << "\">\n"
-          << "<Points>\n<DataArray type=\"Float64\" "
+          << "<Points>\n<DataArray type=\"Float64\" Name=\"Points\" "
              "NumberOfComponents=\"3\" format=\"ascii\">\n";
       for (const Point<dim> &x : points)
         out << x[0] << ' ' << x[1] << ' ' << (dim == 3 ? x[dim - 1] : 0.)
@@ -461,9 +464,133 @@ namespace xcrack
             << (dim == 3 ? f.normal[dim - 1] : 0.) << '\n';
       for (unsigned int k = 0; k < front_list.size(); ++k)
         out << "0 0 0\n";
-      out << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n"
+      // The direction of growth at the front nodes (zero at the facets'
+      // corners): what a run started from this file grows along.
+      out << "</DataArray>\n</CellData>\n<PointData>\n"
+          << "<DataArray type=\"Float64\" Name=\"e1\" "
+             "NumberOfComponents=\"3\" format=\"ascii\">\n";
+      for (const Facet &f : facet_list)
+        for (unsigned int k = 0; k < dim; ++k)
+          out << "0 0 0\n";
+      for (const auto &nodes : front_list)
+        for (const FrontNode &node : nodes)
+          out << node.e1[0] << ' ' << node.e1[1] << ' '
+              << (dim == 3 ? node.e1[dim - 1] : 0.) << '\n';
+      out << "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n"
           << "</VTKFile>\n";
     }
+  }
+
+
+
+  namespace
+  {
+    /// The numbers of the DataArray named @p name in the VTU text @p text
+    /// (empty if there is none).
+    std::vector<double>
+    data_array(const std::string &text, const std::string &name)
+    {
+      const std::size_t at = text.find("Name=\"" + name + "\"");
+      if (at == std::string::npos)
+        return {};
+      const std::size_t   begin = text.find('>', at) + 1;
+      const std::size_t   end   = text.find("</DataArray>", begin);
+      std::istringstream  numbers(text.substr(begin, end - begin));
+      std::vector<double> values;
+      double              x;
+      while (numbers >> x)
+        values.push_back(x);
+      return values;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  FacetSurface<dim>
+  FacetSurface<dim>::read_vtu(std::istream &in, const std::string &what)
+  {
+    const std::string         text((std::istreambuf_iterator<char>(in)),
+                           std::istreambuf_iterator<char>());
+    const std::vector<double> points       = data_array(text, "Points"),
+                              connectivity = data_array(text, "connectivity"),
+                              offsets      = data_array(text, "offsets"),
+                              types        = data_array(text, "types"),
+                              steps        = data_array(text, "step"),
+                              normals      = data_array(text, "normal"),
+                              e1           = data_array(text, "e1");
+    check_input(!points.empty() && points.size() == e1.size() &&
+                  !types.empty() && types.size() == offsets.size() &&
+                  steps.size() == types.size() &&
+                  normals.size() == 3 * types.size(),
+                what + ": not a crack surface written by xcrack's `crack mesh` "
+                       "level-set update (crack_mesh-<step>.vtu, with the cell "
+                       "data step and normal and the point data e1).");
+    const auto point = [&](const unsigned int i, const std::vector<double> &v) {
+      Point<dim> x;
+      for (unsigned int d = 0; d < dim; ++d)
+        x[d] = v[3 * i + d];
+      return x;
+    };
+    FacetSurface<dim>                   surface;
+    std::vector<Facet>                  facets;
+    std::vector<std::vector<FrontNode>> fronts;
+    std::size_t                         start = 0;
+    for (unsigned int c = 0; c < types.size(); ++c)
+      {
+        const std::size_t end  = static_cast<std::size_t>(offsets[c]);
+        const int         type = static_cast<int>(types[c]);
+        check_input(end <= connectivity.size() && end >= start,
+                    what + ": the cells' offsets do not fit its connectivity.");
+        if (type == 3 || type == 5)
+          {
+            check_input(type == (dim == 2 ? 3 : 5),
+                        what + ": a surface of " +
+                          (type == 5 ? "triangles (a 3D crack)" :
+                                       "segments (a 2D crack)") +
+                          " cannot start a " + std::to_string(dim) + "D run.");
+            check_input(end - start == dim,
+                        what + ": a facet with the wrong number of corners.");
+            Facet facet;
+            for (unsigned int k = 0; k < dim; ++k)
+              facet.corners[k] =
+                point(static_cast<unsigned int>(connectivity[start + k]),
+                      points);
+            for (unsigned int d = 0; d < dim; ++d)
+              facet.normal[d] = normals[3 * c + d];
+            facet.step = static_cast<unsigned int>(steps[c]);
+            facets.push_back(facet);
+          }
+        else if (type == 1 || type == 4)
+          {
+            fronts.emplace_back();
+            for (std::size_t k = start; k < end; ++k)
+              {
+                const unsigned int i =
+                  static_cast<unsigned int>(connectivity[k]);
+                Tensor<1, dim> direction = point(i, e1);
+                check_input(direction.norm() > 0,
+                            what + ": a front node without a direction e1.");
+                fronts.back().push_back(
+                  {point(i, points), direction / direction.norm()});
+              }
+          }
+        else
+          throw InputError(what + ": a cell of VTK type " +
+                           std::to_string(type) +
+                           " (a crack surface holds segments or triangles "
+                           "and its fronts).");
+        start = end;
+      }
+    if (dim == 2)
+      for (unsigned int i = 0; i < points.size() / 3; ++i)
+        check_input(points[3 * i + 2] == 0,
+                    what + ": a point with z != 0 cannot start a 2D run.");
+    check_input(!facets.empty() && !fronts.empty(),
+                what + ": a crack surface needs facets and a front.");
+    surface.add(facets);
+    surface.set_fronts(fronts);
+    return surface;
   }
 
 

@@ -4,7 +4,9 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/mapping_q1.h>
 
+#include <xcrack/crack/crack_set.h>
 #include <xcrack/crack/crack_surface.h>
+#include <xcrack/crack/facet_crack.h>
 #include <xcrack/level_set_update/crack_mesh.h>
 #include <xcrack/level_set_update/front_track.h>
 
@@ -218,8 +220,17 @@ namespace xcrack
       if (surfaces.size() < fields.n_cracks())
         surfaces.resize(fields.n_cracks());
       FacetSurface<dim> &surface = surfaces[crack];
+      // A crack started from a surface this update wrote grows on from it;
+      // any other from the lips its fields draw.
       if (surface.empty())
-        surface.add(facets_of_lips(this->get_crack_surfaces()[crack]));
+        {
+          const auto *start = dynamic_cast<const FacetCrack<dim> *>(
+            &this->get_initial_cracks()[crack]);
+          if (start)
+            surface = start->surface();
+          else
+            surface.add(facets_of_lips(this->get_crack_surfaces()[crack]));
+        }
       AssertThrow(!surface.empty(),
                   ExcMessage("The crack mesh level-set update found no lips "
                              "of crack " +

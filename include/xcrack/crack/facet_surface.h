@@ -125,6 +125,15 @@ namespace xcrack
     void
     write_vtu(std::ostream &out) const;
 
+    /**
+     * The surface that write_vtu() wrote to @p in; @p what names the file
+     * (and the entry) in error messages. Throws InputError for a file that
+     * is not such a surface or whose facets do not fit the dimension
+     * (triangles in 2D, segments in 3D, z != 0 in 2D).
+     */
+    static FacetSurface
+    read_vtu(std::istream &in, const std::string &what);
+
     template <class Archive>
     void
     save(Archive &archive, const unsigned int) const
