@@ -2,8 +2,10 @@
 
 #include <xcrack/crack/crack_surface.h>
 #include <xcrack/front_move.h>
+#include <xcrack/level_set_update/front_track.h>
 #include <xcrack/termination_criteria/crack_leaves_body.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -68,6 +70,35 @@ namespace xcrack
 
 
     template <int dim>
+    void
+    CrackLeavesBody<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Crack leaves body");
+      prm.declare_entry(
+        "Through crack",
+        "continue",
+        Patterns::Selection("continue|stop"),
+        "3D: what a crack whose front splits into open fronts (a surface "
+        "crack that broke through the back wall, now a through crack with "
+        "a front on each side; at most two fronts from each it started "
+        "with) does: grow on, with K at every front, or end the run (a "
+        "leak-before-break assessment ends at the leak).");
+      prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    void
+    CrackLeavesBody<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      const Plugins::ScopedSubsection scope(prm, "Crack leaves body");
+      stop_at_through_crack = (prm.get("Through crack") == "stop");
+    }
+
+
+
+    template <int dim>
     Verdict
     CrackLeavesBody<dim>::check()
     {
@@ -76,8 +107,33 @@ namespace xcrack
       if (n_fronts.empty())
         for (const auto &surface : surfaces)
           n_fronts.push_back(surface.fronts().size());
+      if (initial_fronts.empty())
+        initial_fronts = n_fronts;
       for (unsigned int c = 0; c < surfaces.size(); ++c)
-        if (surfaces[c].fronts().size() != n_fronts[c])
+        if (dim == 3 && !stop_at_through_crack &&
+            surfaces[c].fronts().size() > n_fronts[c] &&
+            surfaces[c].fronts().size() <= 2 * initial_fronts[c] &&
+            std::none_of(surfaces[c].fronts().begin(),
+                         surfaces[c].fronts().end(),
+                         [](const auto &front) {
+                           return LevelSetUpdate::is_closed(front);
+                         }))
+          {
+            // More fronts, every one open (ending on the body's surface),
+            // at most two from each front the crack started with: the
+            // crack broke through a wall and grows on as a through crack.
+            // (A piece of crack inside the body would be closed; fronts
+            // that keep splitting are the fields losing the crack.)
+            this->get_pcout()
+              << "Crack " << c + 1 << " broke through the body's surface: "
+              << surfaces[c].fronts().size() << " fronts instead of "
+              << n_fronts[c]
+              << ", it grows on as a through crack (Termination "
+                 "criteria/Crack leaves body/Through crack)."
+              << std::endl;
+            n_fronts[c] = surfaces[c].fronts().size();
+          }
+        else if (surfaces[c].fronts().size() != n_fronts[c])
           {
             std::ostringstream reason;
             reason << "crack " << c + 1 << " now has "
@@ -94,6 +150,10 @@ namespace xcrack
                 reason << "); the level-set update lost the crack's shape "
                           "(a crack that turned strongly)";
               }
+            else if (dim == 3 && surfaces[c].fronts().size() > n_fronts[c])
+              reason << ": it broke through the body's surface (Termination "
+                        "criteria/Crack leaves body/Through crack = stop, or "
+                        "a piece of crack inside the body)";
             else
               reason << ": it reached the surface of the body";
             verdict.stop   = true;
@@ -206,7 +266,8 @@ namespace xcrack
     void
     CrackLeavesBody<dim>::save(Plugins::State &state) const
     {
-      state["fronts"] = Plugins::pack(n_fronts);
+      state["fronts"]         = Plugins::pack(n_fronts);
+      state["initial fronts"] = Plugins::pack(initial_fronts);
     }
 
 
@@ -215,7 +276,8 @@ namespace xcrack
     void
     CrackLeavesBody<dim>::load(const Plugins::State &state)
     {
-      n_fronts = Plugins::unpack(state, "fronts", n_fronts);
+      n_fronts       = Plugins::unpack(state, "fronts", n_fronts);
+      initial_fronts = Plugins::unpack(state, "initial fronts", n_fronts);
     }
 
     XCRACK_REGISTER_PLUGIN(Interface,
@@ -223,6 +285,7 @@ namespace xcrack
                            "crack leaves body",
                            "a 2D tip would leave the body or come within a "
                            "cell of its surface, or a crack's fronts change "
-                           "in number.")
+                           "in number (but a 3D crack breaking through a "
+                           "wall: subsection Crack leaves body).")
   } // namespace TerminationCriteria
 } // namespace xcrack

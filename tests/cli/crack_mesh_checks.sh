@@ -8,8 +8,9 @@
 #   it (`Shape = mesh`, `File name = .../crack_mesh-002.vtu`) solves on the
 #   same meshes and finds the tips, K_I and K_II of the earlier run's step
 #   2, then takes its step 3 (tips and K within 1e-9);
-# - that 2D surface given to a 3D run, a 3D surface (growth_crack_mesh_3d's)
-#   given to a 2D run, and a .vtu file that is not such a surface: exit 1
+# - that 2D surface given to a 3D run, a 3D surface (a triangle, written
+#   as the update writes) given to a 2D run, and a .vtu file that is not
+#   such a surface: exit 1
 #   with a message naming the entry, the file and what is wrong, and no
 #   output directory.
 #
@@ -83,11 +84,37 @@ refused() {
 }
 refused two_in_three 3 "$work/first/crack_mesh-002.vtu" \
   "Crack 1/File name = .*crack_mesh-002.vtu: a surface of segments (a 2D crack) cannot start a 3D run"
-{ sed "s#@SOURCE_DIR@#$tests#" "$tests/growth_crack_mesh_3d.prm.in"
-  echo "set Output directory = penny"; } > penny.prm
-"$xcrack" penny.prm > penny.log 2>&1 || fail "the 3D run failed"
-refused three_in_two 2 "$work/penny/crack_mesh-001.vtu" \
-  "crack_mesh-001.vtu: a surface of triangles (a 3D crack) cannot start a 2D run"
+# A 3D surface as the update writes it: one triangle and its front.
+cat > triangle.vtu <<'VTU'
+<?xml version="1.0"?>
+<VTKFile type="UnstructuredGrid" version="0.1">
+<UnstructuredGrid>
+<Piece NumberOfPoints="5" NumberOfCells="2">
+<Points>
+<DataArray type="Float64" Name="Points" NumberOfComponents="3" format="ascii">
+0 0 0 1 0 0 0 1 0 1 0 0 0 1 0
+</DataArray>
+</Points>
+<Cells>
+<DataArray type="Int64" Name="connectivity" format="ascii">0 1 2 3 4</DataArray>
+<DataArray type="Int64" Name="offsets" format="ascii">3 5</DataArray>
+<DataArray type="UInt8" Name="types" format="ascii">5 4</DataArray>
+</Cells>
+<CellData>
+<DataArray type="Int32" Name="step" format="ascii">0 -1</DataArray>
+<DataArray type="Float64" Name="normal" NumberOfComponents="3" format="ascii">0 0 1 0 0 0</DataArray>
+</CellData>
+<PointData>
+<DataArray type="Float64" Name="e1" NumberOfComponents="3" format="ascii">
+0 0 0 0 0 0 0 0 0 0.7071 0.7071 0 0.7071 0.7071 0
+</DataArray>
+</PointData>
+</Piece>
+</UnstructuredGrid>
+</VTKFile>
+VTU
+refused three_in_two 2 "$work/triangle.vtu" \
+  "triangle.vtu: a surface of triangles (a 3D crack) cannot start a 2D run"
 printf '<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid"></VTKFile>\n' > other.vtu
 refused not_ours 2 "$work/other.vtu" \
   "other.vtu: not a crack surface written by xcrack's .crack mesh. level-set update"

@@ -15,15 +15,28 @@ namespace xcrack
      * the body by the next advance, or to within its cell of the body's
      * surface along its direction (a ligament the Q1 level sets cut
      * through: the piece it holds would come loose and the system be
-     * singular), or when a crack's fronts change in
-     * number (a tip or a piece of front reached the surface: the body is
-     * split or the crack has broken through a wall; or, in 2D, the crack
-     * gained a piece that the level sets made inside the body).
+     * singular), or when a crack's fronts change in number (a tip or a
+     * piece of front reached the surface and the body is split; or, in 2D,
+     * the crack gained a piece that the level sets made inside the body).
+     *
+     * One change in number goes on by default: a 3D front that splits
+     * into open fronts, each ending on the body's surface, is a surface
+     * crack that broke through the back wall; it grows on as a through
+     * crack, K at every front (`Through crack = stop` ends the run there,
+     * as a leak-before-break assessment does). A new closed front would be
+     * a piece of crack inside the body, and more than two fronts from each
+     * the crack started with the fields losing it: both end the run.
      */
     template <int dim>
     class CrackLeavesBody : public Interface<dim>, public SimulatorAccess<dim>
     {
     public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      void
+      parse_parameters(ParameterHandler &prm) override;
+
       Verdict
       check() override;
 
@@ -46,8 +59,15 @@ namespace xcrack
       progress() const override;
 
     private:
-      /// The number of fronts of each crack at the first check.
+      /// The number of fronts of each crack at the first check, and after
+      /// each break-through.
       std::vector<unsigned int> n_fronts;
+
+      /// The number of fronts of each crack at the first check.
+      std::vector<unsigned int> initial_fronts;
+
+      /// `Through crack = stop`.
+      bool stop_at_through_crack = false;
     };
   } // namespace TerminationCriteria
 } // namespace xcrack
