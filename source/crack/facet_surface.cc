@@ -469,9 +469,8 @@ namespace xcrack
       out << "</DataArray>\n</CellData>\n<PointData>\n"
           << "<DataArray type=\"Float64\" Name=\"e1\" "
              "NumberOfComponents=\"3\" format=\"ascii\">\n";
-      for (const Facet &f : facet_list)
-        for (unsigned int k = 0; k < dim; ++k)
-          out << "0 0 0\n";
+      for (std::size_t k = 0; k < dim * facet_list.size(); ++k)
+        out << "0 0 0\n";
       for (const auto &nodes : front_list)
         for (const FrontNode &node : nodes)
           out << node.e1[0] << ' ' << node.e1[1] << ' '

@@ -68,30 +68,12 @@ namespace xcrack
 
 
     template <int dim>
-    void
-    CrackMesh<dim>::extend(const unsigned int                 crack,
-                           const std::vector<FrontMove<dim>> &moves)
+    std::vector<std::vector<typename CrackMesh<dim>::Start>>
+    CrackMesh<dim>::starting_points(const unsigned int crack) const
     {
-      using Facet                = typename FacetSurface<dim>::Facet;
-      using FrontNode            = typename FacetSurface<dim>::FrontNode;
-      FacetSurface<dim> &surface = surfaces[crack];
-      const auto        &fronts  = this->get_crack_surfaces()[crack].fronts();
-      double             largest;
-      const std::vector<Track<dim>> tracks =
-        make_tracks(crack, moves, fronts, largest);
-      const unsigned int step = this->get_step() + 1;
-
-      // The points that advance, per extracted front with their abscissa
-      // on it: the surface's own front nodes, so that its fronts move as
-      // the moves say (the extracted fronts lie on the Q1 fields' zeros,
-      // which cut the chords off a curved front: a surface grown from them
-      // would lose that sagitta at every step); at the first step, or where
-      // the fronts changed in number, the extracted fronts themselves.
-      struct Start
-      {
-        Point<dim> x;
-        double     s;
-      };
+      using FrontNode                  = typename FacetSurface<dim>::FrontNode;
+      const FacetSurface<dim> &surface = surfaces[crack];
+      const auto &fronts = this->get_crack_surfaces()[crack].fronts();
       std::vector<std::vector<Start>> starts(fronts.size());
       bool                            own =
         !surface.fronts().empty() && surface.fronts().size() == fronts.size();
@@ -141,6 +123,27 @@ namespace xcrack
             for (const FrontPoint<dim> &p : fronts[f])
               starts[f].push_back({p.position, p.s});
           }
+
+      return starts;
+    }
+
+
+
+    template <int dim>
+    void
+    CrackMesh<dim>::extend(const unsigned int                 crack,
+                           const std::vector<FrontMove<dim>> &moves)
+    {
+      using Facet                = typename FacetSurface<dim>::Facet;
+      using FrontNode            = typename FacetSurface<dim>::FrontNode;
+      FacetSurface<dim> &surface = surfaces[crack];
+      const auto        &fronts  = this->get_crack_surfaces()[crack].fronts();
+      double             largest;
+      const std::vector<Track<dim>> tracks =
+        make_tracks(crack, moves, fronts, largest);
+      const unsigned int step = this->get_step() + 1;
+
+      const std::vector<std::vector<Start>> starts = starting_points(crack);
 
       std::vector<Facet>                  strip;
       std::vector<std::vector<FrontNode>> new_fronts;

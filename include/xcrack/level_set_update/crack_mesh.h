@@ -58,6 +58,25 @@ namespace xcrack
       load(const Plugins::State &state) override;
 
     private:
+      /// A point that advances, with its abscissa on the extracted front.
+      struct Start
+      {
+        Point<dim> x;
+        double     s;
+      };
+
+      /**
+       * The points of crack @p crack that advance, per extracted front:
+       * the surface's own front nodes, so that its fronts move as the moves
+       * say (the extracted fronts lie on the Q1 fields' zeros, which cut the
+       * chords off a curved front: a surface grown from them would lose that
+       * sagitta at every step), with points added where they drifted
+       * apart; at the first step, or where the fronts changed in number, the
+       * extracted fronts themselves.
+       */
+      std::vector<std::vector<Start>>
+      starting_points(const unsigned int crack) const;
+
       /// The strip swept by the fronts of crack @p crack, and the new
       /// fronts, from the tracks of the step's moves.
       void
