@@ -1,6 +1,7 @@
 #include <deal.II/base/bounding_box.h>
 
 #include <xcrack/crack/facet_surface.h>
+#include <xcrack/crack/nearest_feature.h>
 #include <xcrack/input_error.h>
 
 #include <algorithm>
@@ -15,119 +16,21 @@
 
 namespace xcrack
 {
-  namespace bg  = boost::geometry;
-  namespace bgi = boost::geometry::index;
-
   template <int dim>
   struct FacetSurface<dim>::Index
   {
-    using BPoint = bg::model::point<double, dim, bg::cs::cartesian>;
-    using BBox   = bg::model::box<BPoint>;
-    using Value  = std::pair<BBox, unsigned int>;
-
-    static BPoint
-    to_boost(const Point<dim> &p)
-    {
-      BPoint b;
-      bg::set<0>(b, p[0]);
-      bg::set<1>(b, p[1]);
-      if constexpr (dim == 3)
-        bg::set<2>(b, p[2]);
-      return b;
-    }
-
-    /// The box of half-width @p r around @p p, widened by rounding so
-    /// that boxes at distance exactly r count.
-    static BBox
-    ball_box(const Point<dim> &p, const double r)
-    {
-      const double w = r * (1 + 1e-9) + 1e-300;
-      BBox         box(to_boost(p), to_boost(p));
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          Point<dim> x = p;
-          x[d] -= w;
-          bg::expand(box, to_boost(x));
-          x[d] += 2 * w;
-          bg::expand(box, to_boost(x));
-        }
-      return box;
-    }
-
-    template <typename Container>
-    static BBox
-    box_of(const Container &points)
-    {
-      BBox box(to_boost(points[0]), to_boost(points[0]));
-      for (const auto &p : points)
-        bg::expand(box, to_boost(p));
-      return box;
-    }
-
-    bgi::rtree<Value, bgi::rstar<16>> facets;
+    NearestFeature::BoxTree<dim> facets;
     /// Front segments, numbered through `segments`.
-    bgi::rtree<Value, bgi::rstar<16>>                  front;
+    NearestFeature::BoxTree<dim>                       front;
     std::vector<std::pair<unsigned int, unsigned int>> segments;
-    double                                             tolerance = 0;
+    /// A point of the surface this close to a front is on it.
+    double tolerance = 0;
   };
 
 
 
   namespace
   {
-    /// The point of segment [a, b] nearest to @p p.
-    template <int dim>
-    Point<dim>
-    closest_on_segment(const Point<dim> &a,
-                       const Point<dim> &b,
-                       const Point<dim> &p,
-                       double           &w)
-    {
-      const Tensor<1, dim> t = b - a;
-      w                      = (t.norm_square() > 0 ?
-                                  std::clamp((p - a) * t / t.norm_square(), 0., 1.) :
-                                  0.);
-      return a + w * t;
-    }
-
-
-
-    /// The point of triangle (a, b, c) nearest to @p p, by the Voronoi
-    /// regions of its corners, edges and interior (Ericson, Real-Time
-    /// Collision Detection, 5.1.5).
-    Point<3>
-    closest_on_triangle(const Point<3> &a,
-                        const Point<3> &b,
-                        const Point<3> &c,
-                        const Point<3> &p)
-    {
-      const Tensor<1, 3> ab = b - a, ac = c - a, ap = p - a;
-      const double       d1 = ab * ap, d2 = ac * ap;
-      if (d1 <= 0 && d2 <= 0)
-        return a;
-      const Tensor<1, 3> bp = p - b;
-      const double       d3 = ab * bp, d4 = ac * bp;
-      if (d3 >= 0 && d4 <= d3)
-        return b;
-      const double vc = d1 * d4 - d3 * d2;
-      if (vc <= 0 && d1 >= 0 && d3 <= 0)
-        return a + d1 / (d1 - d3) * ab;
-      const Tensor<1, 3> cp = p - c;
-      const double       d5 = ab * cp, d6 = ac * cp;
-      if (d6 >= 0 && d5 <= d6)
-        return c;
-      const double vb = d5 * d2 - d1 * d6;
-      if (vb <= 0 && d2 >= 0 && d6 <= 0)
-        return a + d2 / (d2 - d6) * ac;
-      const double va = d3 * d6 - d5 * d4;
-      if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
-        return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
-      const double denominator = 1. / (va + vb + vc);
-      return a + vb * denominator * ab + vc * denominator * ac;
-    }
-
-
-
     template <int dim>
     double
     extent(const std::array<Point<dim>, dim> &corners)
@@ -230,12 +133,16 @@ namespace xcrack
     if (index)
       return;
     index = std::make_unique<Index>();
-    std::vector<typename Index::Value> values;
+    std::vector<Point<dim>> corners;
     for (unsigned int f = 0; f < facet_list.size(); ++f)
-      values.emplace_back(Index::box_of(facet_list[f].corners), f);
-    index->facets = decltype(index->facets)(values.begin(), values.end());
+      {
+        index->facets.add(facet_list[f].corners, f);
+        corners.insert(corners.end(),
+                       facet_list[f].corners.begin(),
+                       facet_list[f].corners.end());
+      }
+    index->facets.build();
 
-    values.clear();
     for (unsigned int k = 0; k < front_list.size(); ++k)
       {
         const auto &nodes = front_list[k];
@@ -247,22 +154,20 @@ namespace xcrack
               std::min<unsigned int>(i + 1, nodes.size() - 1);
             const std::vector<Point<dim>> ends = {nodes[i].position,
                                                   nodes[j].position};
-            values.emplace_back(Index::box_of(ends), index->segments.size());
+            index->front.add(ends, index->segments.size());
             index->segments.emplace_back(k, i);
           }
       }
-    index->front = decltype(index->front)(values.begin(), values.end());
+    index->front.build();
 
     // A point of the surface this close to a front is on it: rounding
     // apart, the strips end on the front nodes.
-    BoundingBox<dim> box;
-    for (const Facet &f : facet_list)
-      for (const Point<dim> &x : f.corners)
-        box.merge_with(BoundingBox<dim>(std::make_pair(x, x)));
-    index->tolerance =
-      1e-6 * (facet_list.empty() ? 0. :
-                                   box.get_boundary_points().first.distance(
-                                     box.get_boundary_points().second));
+    if (!corners.empty())
+      {
+        const auto [lower, upper] =
+          BoundingBox<dim>(corners).get_boundary_points();
+        index->tolerance = 1e-6 * lower.distance(upper);
+      }
   }
 
 
@@ -285,23 +190,14 @@ namespace xcrack
     const auto closest = [&](const unsigned int f) {
       const auto &c = facet_list[f].corners;
       if constexpr (dim == 2)
-        {
-          double w;
-          return closest_on_segment(c[0], c[1], p, w);
-        }
+        return NearestFeature::on_segment(c[0], c[1], p).first;
       else
-        return closest_on_triangle(c[0], c[1], c[2], p);
+        return NearestFeature::on_triangle(c[0], c[1], c[2], p).first;
     };
-    // The facet whose box is nearest bounds the distance d; the nearest
-    // facets are among those whose boxes meet the box of half-width d.
-    const auto first =
-      index->facets.qbegin(bgi::nearest(Index::to_boost(p), 1));
-    const double                       d = p.distance(closest(first->second));
-    std::vector<typename Index::Value> candidates;
-    index->facets.query(bgi::intersects(Index::ball_box(p, d)),
-                        std::back_inserter(candidates));
+    const std::vector<unsigned int> candidates = index->facets.candidates(
+      p, p.distance(closest(index->facets.nearest_box(p))));
     double best_distance = std::numeric_limits<double>::max();
-    for (const auto &[box, f] : candidates)
+    for (const unsigned int f : candidates)
       best_distance = std::min(best_distance, p.distance(closest(f)));
     // Of the facets at that distance (an edge or corner they share, up to
     // rounding), the one whose normal p - c follows best.
@@ -309,7 +205,7 @@ namespace xcrack
     Point<dim>     c;
     Tensor<1, dim> n;
     double         largest = -1;
-    for (const auto &[box, f] : candidates)
+    for (const unsigned int f : candidates)
       {
         const Point<dim> y = closest(f);
         if (p.distance(y) <= best_distance + tolerance)
@@ -348,19 +244,19 @@ namespace xcrack
       const auto &[front, i]   = index->segments[k];
       const auto        &nodes = front_list[front];
       const unsigned int j = std::min<unsigned int>(i + 1, nodes.size() - 1);
-      double             w;
-      const Point<dim>   y =
-        closest_on_segment(nodes[i].position, nodes[j].position, p, w);
-      Tensor<1, dim> e1 = (1 - w) * nodes[i].e1 + w * nodes[j].e1;
+      // The nearest point of the segment, and e1 interpolated there.
+      const Tensor<1, dim> t = nodes[j].position - nodes[i].position;
+      const double         w =
+        (t.norm_square() > 0 ?
+           std::clamp((p - nodes[i].position) * t / t.norm_square(), 0., 1.) :
+           0.);
+      const Point<dim> y  = nodes[i].position + w * t;
+      Tensor<1, dim>   e1 = (1 - w) * nodes[i].e1 + w * nodes[j].e1;
       return std::make_pair(y, Tensor<1, dim>(e1 / e1.norm()));
     };
-    const auto first = index->front.qbegin(bgi::nearest(Index::to_boost(p), 1));
-    auto       best  = closest(first->second);
-    double     d     = p.distance(best.first);
-    std::vector<typename Index::Value> candidates;
-    index->front.query(bgi::intersects(Index::ball_box(p, d)),
-                       std::back_inserter(candidates));
-    for (const auto &[box, k] : candidates)
+    auto   best = closest(index->front.nearest_box(p));
+    double d    = p.distance(best.first);
+    for (const unsigned int k : index->front.candidates(p, d))
       {
         const auto y = closest(k);
         if (p.distance(y.first) < d)

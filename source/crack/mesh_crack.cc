@@ -2,11 +2,10 @@
 
 #include <xcrack/crack/crack_surface_file.h>
 #include <xcrack/crack/mesh_crack.h>
+#include <xcrack/crack/nearest_feature.h>
 #include <xcrack/input_error.h>
 
 #include <algorithm>
-#include <boost/geometry.hpp>
-#include <boost/geometry/index/rtree.hpp>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -14,56 +13,10 @@
 
 namespace xcrack
 {
-  namespace bg  = boost::geometry;
-  namespace bgi = boost::geometry::index;
-
   template <int dim>
   struct MeshCrack<dim>::Index
   {
-    using BPoint = bg::model::point<double, dim, bg::cs::cartesian>;
-    using BBox   = bg::model::box<BPoint>;
-    using Value  = std::pair<BBox, unsigned int>;
-
-    static BPoint
-    to_boost(const Point<dim> &p)
-    {
-      BPoint b;
-      bg::set<0>(b, p[0]);
-      bg::set<1>(b, p[1]);
-      if constexpr (dim == 3)
-        bg::set<2>(b, p[2]);
-      return b;
-    }
-
-    /// The box of half-width @p r around @p p (slightly widened so that
-    /// boxes at distance exactly r count).
-    static BBox
-    ball_box(const Point<dim> &p, const double r)
-    {
-      const double w = r * (1 + 1e-12) + 1e-300;
-      BBox         box(to_boost(p), to_boost(p));
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          Point<dim> x = p;
-          x[d] -= w;
-          bg::expand(box, to_boost(x));
-          x[d] += 2 * w;
-          bg::expand(box, to_boost(x));
-        }
-      return box;
-    }
-
-    static BBox
-    box_of(const std::vector<Point<dim>> &points)
-    {
-      BBox box(to_boost(points[0]), to_boost(points[0]));
-      for (const auto &p : points)
-        bg::expand(box, to_boost(p));
-      return box;
-    }
-
-    bgi::rtree<Value, bgi::rstar<16>> facets;
-    bgi::rtree<Value, bgi::rstar<16>> front;
+    NearestFeature::BoxTree<dim> facets, front;
   };
 
 
@@ -330,16 +283,16 @@ namespace xcrack
         }
     boundary_is_front.assign(boundary.size(), true);
 
-    box = BoundingBox<dim>(vertices);
-    std::vector<typename Index::Value> values;
+    box           = BoundingBox<dim>(vertices);
+    index->facets = NearestFeature::BoxTree<dim>();
     for (unsigned int f = 0; f < facets.size(); ++f)
       {
         std::vector<Point<dim>> corners;
         for (unsigned int k = 0; k < n_corners; ++k)
           corners.push_back(vertices[facets[f][k]]);
-        values.emplace_back(Index::box_of(corners), f);
+        index->facets.add(corners, f);
       }
-    index->facets = decltype(index->facets)(values.begin(), values.end());
+    index->facets.build();
   }
 
 
@@ -350,13 +303,13 @@ namespace xcrack
   {
     front_elements.clear();
     front_vertex_e1.assign(vertices.size(), Tensor<1, dim>());
-    std::vector<typename Index::Value> values;
+    index->front = NearestFeature::BoxTree<dim>();
     for (unsigned int b = 0; b < boundary.size(); ++b)
       if (boundary_is_front[b])
         {
           const auto             &edge = edges[boundary[b]];
           std::vector<Point<dim>> ends = {vertices[edge[0]], vertices[edge[1]]};
-          values.emplace_back(Index::box_of(ends), front_elements.size());
+          index->front.add(ends, front_elements.size());
           front_elements.push_back(b);
           front_vertex_e1[edge[0]] += boundary_e1[b];
           if (dim == 3)
@@ -365,7 +318,7 @@ namespace xcrack
     for (auto &e1 : front_vertex_e1)
       if (e1.norm() > 0)
         e1 /= e1.norm();
-    index->front = decltype(index->front)(values.begin(), values.end());
+    index->front.build();
   }
 
 
@@ -414,50 +367,23 @@ namespace xcrack
   MeshCrack<dim>::closest_on_facet(const unsigned int f,
                                    const Point<dim>  &p) const
   {
-    const auto &c = facets[f];
-    if constexpr (dim == 2)
-      {
-        const Point<2>    &a = vertices[c[0]], &b = vertices[c[1]];
-        const Tensor<1, 2> t = b - a;
-        const double       s = (p - a) * t / t.norm_square();
-        if (s <= 0)
-          return {a, vertex_normal[c[0]]};
-        if (s >= 1)
-          return {b, vertex_normal[c[1]]};
-        return {a + s * t, facet_normal[f]};
-      }
-    else
-      {
-        // Ericson, Real-Time Collision Detection, 5.1.5: the Voronoi region
-        // of p tells the feature, whose normal decides the side.
-        const Point<3> &a = vertices[c[0]], &b = vertices[c[1]],
-                       &cc    = vertices[c[2]];
-        const Tensor<1, 3> ab = b - a, ac = cc - a, ap = p - a;
-        const double       d1 = ab * ap, d2 = ac * ap;
-        if (d1 <= 0 && d2 <= 0)
-          return {a, vertex_normal[c[0]]};
-        const Tensor<1, 3> bp = p - b;
-        const double       d3 = ab * bp, d4 = ac * bp;
-        if (d3 >= 0 && d4 <= d3)
-          return {b, vertex_normal[c[1]]};
-        const double vc = d1 * d4 - d3 * d2;
-        if (vc <= 0 && d1 >= 0 && d3 <= 0)
-          return {a + d1 / (d1 - d3) * ab, edge_normal[facet_edges[f][0]]};
-        const Tensor<1, 3> cp = p - cc;
-        const double       d5 = ab * cp, d6 = ac * cp;
-        if (d6 >= 0 && d5 <= d6)
-          return {cc, vertex_normal[c[2]]};
-        const double vb = d5 * d2 - d1 * d6;
-        if (vb <= 0 && d2 >= 0 && d6 <= 0)
-          return {a + d2 / (d2 - d6) * ac, edge_normal[facet_edges[f][2]]};
-        const double va = d3 * d6 - d5 * d4;
-        if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
-          return {b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (cc - b),
-                  edge_normal[facet_edges[f][1]]};
-        const double denominator = 1. / (va + vb + vc);
-        return {a + vb * denominator * ab + vc * denominator * ac,
-                facet_normal[f]};
-      }
+    // The feature the nearest point lies on decides the normal: a corner's,
+    // an edge's or the facet's.
+    const auto &c           = facets[f];
+    const auto [x, feature] = [&]() {
+      if constexpr (dim == 2)
+        return NearestFeature::on_segment(vertices[c[0]], vertices[c[1]], p);
+      else
+        return NearestFeature::on_triangle(vertices[c[0]],
+                                           vertices[c[1]],
+                                           vertices[c[2]],
+                                           p);
+    }();
+    if (feature.kind == NearestFeature::Feature::corner)
+      return {x, vertex_normal[c[feature.index]]};
+    if (feature.kind == NearestFeature::Feature::edge)
+      return {x, edge_normal[facet_edges[f][feature.index]]};
+    return {x, facet_normal[f]};
   }
 
 
@@ -466,26 +392,18 @@ namespace xcrack
   double
   MeshCrack<dim>::lsn(const Point<dim> &p) const
   {
-    const auto   bp           = Index::to_boost(p);
     const double box_distance = distance_to_box(box, p);
     if (band > 0 && box_distance > band)
       {
         // Far from the crack: only the side matters.
-        const auto   nearest = index->facets.qbegin(bgi::nearest(bp, 1));
-        const double side    = (p - vertices[facets[nearest->second][0]]) *
-                            facet_normal[nearest->second];
+        const unsigned int nearest = index->facets.nearest_box(p);
+        const double       side =
+          (p - vertices[facets[nearest][0]]) * facet_normal[nearest];
         return (side >= 0 ? 1. : -1.) * box_distance;
       }
-    // The facet whose box is nearest gives an upper bound d of the
-    // distance; the nearest facet is among those whose boxes meet the ball
-    // of radius d, i.e. the box of half-width d around p.
-    const auto first = index->facets.qbegin(bgi::nearest(bp, 1));
-    auto       best  = closest_on_facet(first->second, p);
-    double     d     = p.distance(best.first);
-    std::vector<typename Index::Value> candidates;
-    index->facets.query(bgi::intersects(Index::ball_box(p, d)),
-                        std::back_inserter(candidates));
-    for (const auto &[box, f] : candidates)
+    auto   best = closest_on_facet(index->facets.nearest_box(p), p);
+    double d    = p.distance(best.first);
+    for (const unsigned int f : index->facets.candidates(p, d))
       {
         const auto c = closest_on_facet(f, p);
         if (p.distance(c.first) < d)
@@ -506,7 +424,6 @@ namespace xcrack
     // No front: the crack runs through the body.
     if (front_elements.empty())
       return -1e100;
-    const auto   bp           = Index::to_boost(p);
     const double box_distance = distance_to_box(box, p);
     if (band > 0 && box_distance > band)
       return box_distance;
@@ -525,13 +442,9 @@ namespace xcrack
         return std::make_pair(vertices[edge[1]], front_vertex_e1[edge[1]]);
       return std::make_pair(Point<dim>(a + s * t), boundary_e1[b]);
     };
-    const auto first = index->front.qbegin(bgi::nearest(bp, 1));
-    auto       best  = closest(first->second);
-    double     d     = p.distance(best.first);
-    std::vector<typename Index::Value> candidates;
-    index->front.query(bgi::intersects(Index::ball_box(p, d)),
-                       std::back_inserter(candidates));
-    for (const auto &[box, k] : candidates)
+    auto   best = closest(index->front.nearest_box(p));
+    double d    = p.distance(best.first);
+    for (const unsigned int k : index->front.candidates(p, d))
       {
         const auto c = closest(k);
         if (p.distance(c.first) < d)
