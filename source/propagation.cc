@@ -102,6 +102,7 @@ namespace xcrack
     {
       const Plugins::ScopedSubsection s(prm, "Level set update");
       level_set_update = LevelSetUpdate::create<dim>(prm, simulator);
+      level_set_update->check_advance(advance);
     }
   }
 

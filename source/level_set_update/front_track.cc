@@ -196,6 +196,16 @@ namespace xcrack
 
 
 
+    double
+    default_band(const double enrichment_radius,
+                 const double h,
+                 const double largest_advance)
+    {
+      return 2 * std::max(enrichment_radius, 6 * h) + 2 * largest_advance;
+    }
+
+
+
 #define XCRACK_INSTANTIATE(dim)                                             \
   template struct Sample<dim>;                                              \
   template struct Track<dim>;                                               \

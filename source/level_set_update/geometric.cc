@@ -56,7 +56,7 @@ namespace xcrack
       const double radius = (this->get_enrichment() ?
                                this->get_enrichment()->get_parameters().radius :
                                0.);
-      return 2 * std::max(radius, 6 * h) + 2 * largest_advance;
+      return default_band(radius, h, largest_advance);
     }
 
 

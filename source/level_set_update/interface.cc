@@ -20,6 +20,13 @@ namespace xcrack
 
 
     template <int dim>
+    void
+    Interface<dim>::check_advance(const double) const
+    {}
+
+
+
+    template <int dim>
     std::unique_ptr<Interface<dim>>
     create(ParameterHandler &prm, const Simulator<dim> &simulator)
     {
@@ -32,6 +39,8 @@ namespace xcrack
 
 
 
+    template class Interface<2>;
+    template class Interface<3>;
     template std::unique_ptr<Interface<2>>
     create(ParameterHandler &, const Simulator<2> &);
     template std::unique_ptr<Interface<3>>

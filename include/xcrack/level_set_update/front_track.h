@@ -115,6 +115,18 @@ namespace xcrack
     front_cell_size(const LevelSetFields<dim> &fields,
                     const unsigned int         crack,
                     const MPI_Comm             communicator);
+
+    /**
+     * The band around the front in which an update gives nodes new level
+     * sets, when the user sets none: twice the larger of the enrichment
+     * radius @p enrichment_radius and six front cells of size @p h (the
+     * crowns of the next K extraction lie inside), plus twice the largest
+     * advance @p largest_advance (the new front too).
+     */
+    double
+    default_band(const double enrichment_radius,
+                 const double h,
+                 const double largest_advance);
   } // namespace LevelSetUpdate
 } // namespace xcrack
 

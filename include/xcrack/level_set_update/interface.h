@@ -26,10 +26,10 @@ namespace xcrack
    *
    * The seed's four methods fit here: `geometric` (the nodes near the
    * front projected on it), `crack mesh` (an explicit surface extended by
-   * the advance), and to come `upwind` (Hamilton-Jacobi on an auxiliary
-   * grid) and `simplex` (the same on a simplicial split), each one more
-   * file pair. What they share (the moves along a front by abscissa, the
-   * projection on a front) is in front_track.h. A method that keeps state
+   * the advance), `upwind` (Hamilton-Jacobi on an auxiliary grid), and to
+   * come `simplex` (the same on a simplicial split), each one more file
+   * pair. What they share (the moves along a front by abscissa, the
+   * projection on a front, the default band) is in front_track.h. A method that keeps state
    * across steps (a surface) saves and loads it with the checkpoint.
    */
   namespace LevelSetUpdate
@@ -47,6 +47,15 @@ namespace xcrack
       update(const unsigned int                 crack,
              const std::vector<FrontMove<dim>> &moves,
              LevelSetFields<dim>               &fields) = 0;
+
+      /**
+       * Refuse settings that cannot work with steps of at most
+       * @p maximum_advance (Propagation/Maximum advance), with an
+       * InputError naming the entry: called once the parameters are read,
+       * before any work.
+       */
+      virtual void
+      check_advance(const double maximum_advance) const;
     };
 
 

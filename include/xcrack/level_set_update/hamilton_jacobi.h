@@ -1,0 +1,109 @@
+#ifndef xcrack_level_set_update_hamilton_jacobi_h
+#define xcrack_level_set_update_hamilton_jacobi_h
+
+#include <deal.II/base/tensor.h>
+
+#include <xcrack/level_set_update/band_grid.h>
+
+#include <vector>
+
+namespace xcrack
+{
+  namespace LevelSetUpdate
+  {
+    /**
+     * The phases of a Hamilton-Jacobi level-set update on a BandGrid
+     * (Gravouil, Moes and Belytschko 2002; the seed's `upwind` method),
+     * first order in space with upwind (Godunov) differences, explicit in
+     * pseudo-time. Every function works on the active points only; a
+     * missing neighbour (the band's edge, the body's surface) brings no
+     * information: no ghost point, nothing extrapolated beyond the band.
+     */
+    namespace HamiltonJacobi
+    {
+      /**
+       * Integrate phi_t + V |grad phi| = 0 over a unit of pseudo-time, V =
+       * @p speed per point (CFL 1/2).
+       */
+      template <int dim>
+      void
+      propagate(const BandGrid<dim>       &grid,
+                const std::vector<double> &speed,
+                std::vector<double>       &phi);
+
+      /**
+       * Make @p phi a signed distance to its zero set in the band: phi_t +
+       * S(phi_0) (|grad phi| - 1) = 0 to a steady state. The points next to
+       * the zero set (a neighbour of the other sign) are not evolved: they
+       * are set once to phi_0 / |grad phi_0|, their distance to the
+       * linearised zero set (Russo and Smereka's fix), so that the zero set
+       * does not move with the iterations. Returns the iterations taken;
+       * stops when no value changes by more than @p tolerance grid
+       * spacings, or after the pseudo-time that crosses @p width.
+       */
+      template <int dim>
+      unsigned int
+      reinitialise(const BandGrid<dim> &grid,
+                   std::vector<double> &phi,
+                   const double         width,
+                   const double         tolerance = 1e-4);
+
+      /**
+       * Make grad @p psi orthogonal to grad @p phi: psi_t + S(phi) n . grad
+       * psi = 0, n = grad phi / |grad phi|, to a steady state (upwind along
+       * n): psi is carried away from the zero set of phi along its normals,
+       * so the zero set of psi on that of phi (the front) stays. Returns the
+       * iterations taken; the same stopping rule as reinitialise().
+       */
+      template <int dim>
+      unsigned int
+      orthogonalise(const BandGrid<dim>       &grid,
+                    const std::vector<double> &phi,
+                    std::vector<double>       &psi,
+                    const double               width,
+                    const double               tolerance = 1e-4);
+
+      /// The iterations the steady-state phases of move_front() took.
+      struct Iterations
+      {
+        unsigned int reinitialise_phi = 0, orthogonalise = 0,
+                     reinitialise_psi = 0;
+      };
+
+      /**
+       * The five phases of a step of a front: lsn @p phi and lst @p psi
+       * (signed distances) move so that the front, where both are zero,
+       * advances by @p advance per point along its direction turned by
+       * @p kink (radians, positive towards phi > 0), the crack behind it
+       * (phi = 0, psi < 0) staying where it is:
+       *
+       * 1. phi_t + V |grad phi| = 0, V = max(psi, 0) asinh(tan(kink)):
+       *    ahead of the front the zero set turns about it by the kink;
+       * 2. psi_t + advance cos(kink) |grad psi| = 0;
+       * 3. phi reinitialised; 4. psi made orthogonal to phi; 5. psi
+       *    reinitialised;
+       *
+       * each steady-state phase over the pseudo-time that crosses
+       * @p width.
+       */
+      template <int dim>
+      Iterations
+      move_front(const BandGrid<dim>       &grid,
+                 const std::vector<double> &kink,
+                 const std::vector<double> &advance,
+                 const double               width,
+                 std::vector<double>       &phi,
+                 std::vector<double>       &psi);
+
+      /// The gradient of @p phi at active point @p i: central differences,
+      /// one-sided where a neighbour is missing, 0 where both are.
+      template <int dim>
+      Tensor<1, dim>
+      gradient(const BandGrid<dim>       &grid,
+               const std::vector<double> &phi,
+               const std::size_t          i);
+    } // namespace HamiltonJacobi
+  }   // namespace LevelSetUpdate
+} // namespace xcrack
+
+#endif

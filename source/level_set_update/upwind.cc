@@ -1,0 +1,251 @@
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <xcrack/crack/crack_surface.h>
+#include <xcrack/input_error.h>
+#include <xcrack/level_set_update/band_grid.h>
+#include <xcrack/level_set_update/front_track.h>
+#include <xcrack/level_set_update/hamilton_jacobi.h>
+#include <xcrack/level_set_update/upwind.h>
+#include <xcrack/xfem/enrichment.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace xcrack
+{
+  namespace LevelSetUpdate
+  {
+    template <int dim>
+    void
+    Upwind<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Upwind");
+      prm.declare_entry(
+        "Band radius",
+        "0",
+        Patterns::Double(0),
+        "The grid covers the points of the body within this distance of "
+        "the front (plus the advance); mesh nodes farther away keep lsn, "
+        "and lst keeps its sign. 0: as the geometric update's, twice the "
+        "larger of the enrichment radius and six diameters of the front "
+        "cells, plus twice the largest advance. At least Propagation/"
+        "Maximum advance.");
+      prm.declare_entry(
+        "Grid spacing",
+        "0.5",
+        Patterns::Double(),
+        "The spacing of the auxiliary grid, in edges of the cells at the "
+        "front (> 0). The cost grows as its inverse to the power of the "
+        "dimension plus one; the diffusion of the scheme shrinks with it "
+        "(doc/verification/level-set-update.md).");
+      prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    void
+    Upwind<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      const Plugins::ScopedSubsection scope(prm, "Upwind");
+      band_radius = prm.get_double("Band radius");
+      spacing     = prm.get_double("Grid spacing");
+      check_input(spacing > 0,
+                  "Propagation/Level set update/Upwind/Grid spacing = " +
+                    prm.get("Grid spacing") +
+                    ": must be positive (in edges of the front cells).");
+    }
+
+
+
+    template <int dim>
+    void
+    Upwind<dim>::check_advance(const double maximum_advance) const
+    {
+      check_input(band_radius == 0 || band_radius >= maximum_advance,
+                  "Propagation/Level set update/Upwind/Band radius = " +
+                    Utilities::to_string(band_radius) +
+                    " is narrower than Propagation/Maximum advance = " +
+                    Utilities::to_string(maximum_advance) +
+                    ": the new front would leave the grid. Give a band at "
+                    "least the crowns' radius plus the advance, or 0.");
+    }
+
+
+
+    template <int dim>
+    double
+    Upwind<dim>::band(const double h, const double largest_advance) const
+    {
+      if (band_radius > 0)
+        return band_radius;
+      return default_band(this->get_enrichment() ?
+                            this->get_enrichment()->get_parameters().radius :
+                            0.,
+                          h,
+                          largest_advance);
+    }
+
+
+
+    template <int dim>
+    BoundingBox<dim>
+    Upwind<dim>::body_box() const
+    {
+      std::vector<double> lower(dim, std::numeric_limits<double>::max()),
+        upper(dim, std::numeric_limits<double>::max());
+      for (const auto &cell : this->get_triangulation().active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int v : cell->vertex_indices())
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                lower[d] = std::min(lower[d], cell->vertex(v)[d]);
+                upper[d] = std::min(upper[d], -cell->vertex(v)[d]);
+              }
+      const MPI_Comm comm = this->get_mpi_communicator();
+      Utilities::MPI::min(lower, comm, lower);
+      Utilities::MPI::min(upper, comm, upper);
+      Point<dim> a, b;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          a[d] = lower[d];
+          b[d] = -upper[d];
+        }
+      return BoundingBox<dim>({a, b});
+    }
+
+
+
+    template <int dim>
+    void
+    Upwind<dim>::update(const unsigned int                 crack,
+                        const std::vector<FrontMove<dim>> &moves,
+                        LevelSetFields<dim>               &fields)
+    {
+      const auto &fronts = this->get_crack_surfaces()[crack].fronts();
+      double      largest;
+      const std::vector<Track<dim>> tracks =
+        make_tracks(crack, moves, fronts, largest);
+      if (largest == 0)
+        return;
+      const MPI_Comm comm   = this->get_mpi_communicator();
+      const double   h      = front_cell_size(fields, crack, comm);
+      const double   dx     = spacing * h / std::sqrt(dim);
+      const double   radius = band(h, largest);
+      // The grid reaches a little beyond the band, so that the grid cells of
+      // the mesh nodes in the band have all their corners.
+      const double reach = radius + largest + 2 * dx;
+
+      Point<dim> lower, upper;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower[d] = std::numeric_limits<double>::max();
+          upper[d] = -std::numeric_limits<double>::max();
+        }
+      for (const auto &front : fronts)
+        for (const FrontPoint<dim> &point : front)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              lower[d] = std::min(lower[d], point.position[d] - reach);
+              upper[d] = std::max(upper[d], point.position[d] + reach);
+            }
+      BandGrid<dim> grid(BoundingBox<dim>({lower, upper}),
+                         body_box(),
+                         dx,
+                         static_cast<std::size_t>(max_points));
+      auto [phi, psi] = grid.sample(fields, crack, comm);
+
+      // The band: the grid points in the body within reach of the old
+      // front, with the kink and advance of their projection on it (the
+      // velocities extended from the front).
+      std::vector<char>   active(grid.size(), 0);
+      std::vector<double> angle(grid.size(), 0.), advance(grid.size(), 0.);
+      std::vector<unsigned int> front_of(grid.size(), 0);
+      // Which way lsn counts along e2 at each front (e2 of the frame of K
+      // need not point to the lsn > 0 side): behind a front lsn = +-(d .
+      // e2).
+      std::vector<double> orientation(fronts.size(), 0.);
+      for (std::size_t i = 0; i < grid.size(); ++i)
+        {
+          if (std::isnan(phi[i]))
+            continue;
+          const Point<dim> x       = grid.point(i);
+          const auto [front, s, p] = project(fronts, x);
+          if (x.distance(p) > reach)
+            continue;
+          active[i]                = 1;
+          const Sample<dim> sample = tracks[front].at(s);
+          angle[i]                 = sample.angle;
+          advance[i]               = sample.advance;
+          front_of[i]              = front;
+          if ((x - p) * sample.old_direction() < 0)
+            orientation[front] += phi[i] * ((x - p) * sample.old_normal());
+        }
+      grid.set_active(active);
+
+      // The kinks towards lsn > 0.
+      for (std::size_t i = 0; i < grid.size(); ++i)
+        if (active[i] && orientation[front_of[i]] < 0)
+          angle[i] = -angle[i];
+      const HamiltonJacobi::Iterations n =
+        HamiltonJacobi::move_front(grid, angle, advance, reach, phi, psi);
+      this->get_pcout() << "   Upwind update of crack " << crack + 1 << ": "
+                        << grid.n_active() << " grid points, iterations "
+                        << n.reinitialise_phi << ", " << n.orthogonalise << ", "
+                        << n.reinitialise_psi << std::endl;
+
+      // Back to the mesh: the nodes in the band by interpolation, the
+      // others as the geometric update's far nodes.
+      const DoFHandler<dim> &dof_handler = fields.get_dof_handler();
+      std::map<types::global_dof_index, Point<dim>> support;
+      DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
+                                           dof_handler,
+                                           support);
+      const IndexSet                owned = dof_handler.locally_owned_dofs();
+      TrilinosWrappers::MPI::Vector new_lsn(owned, comm), new_lst(owned, comm);
+      const auto                   &old_lsn = fields.lsn(crack);
+      const auto                   &old_lst = fields.lst(crack);
+      for (const types::global_dof_index dof : owned)
+        {
+          const Point<dim> &x  = support.at(dof);
+          const double      t0 = old_lst[dof];
+          new_lsn[dof]         = old_lsn[dof];
+          new_lst[dof]         = (t0 <= 0 ? t0 - largest : t0);
+          bool in_box          = true;
+          for (unsigned int d = 0; d < dim; ++d)
+            in_box = in_box && x[d] >= lower[d] && x[d] <= upper[d];
+          if (!in_box ||
+              x.distance(std::get<2>(project(fronts, x))) > radius + largest)
+            continue;
+          const auto weights = grid.weights(x);
+          if (weights.empty())
+            continue;
+          double n = 0, t = 0;
+          for (const auto &[i, w] : weights)
+            {
+              n += w * phi[i];
+              t += w * psi[i];
+            }
+          new_lsn[dof] = n;
+          new_lst[dof] = t;
+        }
+      new_lsn.compress(VectorOperation::insert);
+      new_lst.compress(VectorOperation::insert);
+      fields.set(crack, new_lsn, new_lst);
+    }
+
+    XCRACK_REGISTER_PLUGIN(Interface,
+                           Upwind,
+                           "upwind",
+                           "Hamilton-Jacobi equations on an auxiliary "
+                           "Cartesian grid over a band around the front, "
+                           "first-order upwind differences, with "
+                           "reinitialisation and re-orthogonalisation "
+                           "(subsection Upwind).")
+  } // namespace LevelSetUpdate
+} // namespace xcrack
