@@ -15,6 +15,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <sstream>
 
 namespace xcrack
 {
@@ -67,13 +68,15 @@ namespace xcrack
     void
     Upwind<dim>::check_advance(const double maximum_advance) const
     {
+      std::ostringstream message;
+      message << "Propagation/Level set update/Upwind/Band radius = "
+              << band_radius
+              << " is narrower than Propagation/Maximum advance = "
+              << maximum_advance
+              << ": the new front would leave the grid. Give a band at least "
+                 "the crowns' radius plus the advance, or 0.";
       check_input(band_radius == 0 || band_radius >= maximum_advance,
-                  "Propagation/Level set update/Upwind/Band radius = " +
-                    Utilities::to_string(band_radius) +
-                    " is narrower than Propagation/Maximum advance = " +
-                    Utilities::to_string(maximum_advance) +
-                    ": the new front would leave the grid. Give a band at "
-                    "least the crowns' radius plus the advance, or 0.");
+                  message.str());
     }
 
 

@@ -75,6 +75,16 @@ expect_error growth_no_advance "Propagation/Maximum advance = 0: must be positiv
 expect_error growth_ratio "Propagation/Load ratio = 1: must be below 1" < <(growth 0.1 1)
 expect_error growth_c "Propagation/Growth law/Paris/C = -1: must be positive" < <(growth 0.1 0 paris -1)
 expect_error growth_m "Propagation/Growth law/Paris/m = 0: must be positive" < <(growth 0.1 0 paris 1e-3 0)
+# The upwind level-set update: its grid needs a spacing, its band the advance.
+upwind() {
+  growth 0.1
+  printf 'subsection Propagation\n  subsection Level set update\n    set Model name = upwind\n'
+  printf '    subsection Upwind\n      set %s\n    end\n  end\nend\n' "$1"
+}
+expect_error upwind_spacing "Propagation/Level set update/Upwind/Grid spacing = 0: must be positive" \
+  < <(upwind "Grid spacing = 0")
+expect_error upwind_band "Propagation/Level set update/Upwind/Band radius = 0.05 is narrower than Propagation/Maximum advance = 0.1" \
+  < <(upwind "Band radius = 0.05")
 expect_error growth_forman "Model name = forman needs the fracture toughness: set Material/Fracture toughness" \
   < <(growth 0.1 0 forman)
 expect_error growth_failure_check "'fracture toughness' needs Material/Fracture toughness" \

@@ -7,7 +7,8 @@
 # tests/growth_center_2d; tests/cli/growth_friction_2d.prm, whose lips
 # close and slip against friction at the minimum of each step; and
 # tests/cli/growth_crack_mesh_2d.prm, whose level-set update keeps the
-# crack surface as state of its own.)
+# crack surface as state of its own; tests/cli/growth_upwind_2d.prm, the
+# same with the upwind update.)
 #
 #   resume.sh XCRACK_EXECUTABLE SCENE.prm
 set -u
