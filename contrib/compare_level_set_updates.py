@@ -6,6 +6,10 @@ markdown table for doc/verification/level-set-update.md.
     /usr/bin/python3 contrib/compare_level_set_updates.py [--jobs 2]
         [--scenes paris_center_2d,dcb_2d,...] [--methods geometric,crack mesh]
 
+A method may carry entries of its subsection after `@`, relative to
+Propagation/Level set update: `upwind@Upwind/Grid spacing=1` runs the
+upwind update on a grid of one front-cell edge.
+
 Each shipped scene of prm/benchmarks/ (default: paris_center_2d, dcb_2d,
 paris_ellipse_3d, mixed_mode_3pb_3d, surface_crack_3d; add paris_penny_3d,
 4 minutes a method) runs once per method (`-s Propagation/Level set
@@ -52,12 +56,16 @@ def run(scene, method, work):
     needs."""
     out = os.path.join(work, "out")
     env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
+    name, *entries = method.split("@")
+    settings = []
+    for entry in entries:
+        settings += ["-s", f"Propagation/Level set update/{entry}"]
     start = time.time()
     result = subprocess.run(
         [xcrack, "-s", f"Output directory={out}",
          "-s", "Output/Timing summary=false", "-s", "Output/Write vtu=false",
-         "-s", f"Propagation/Level set update/Model name={method}",
-         os.path.join(top, "prm", "benchmarks", scene + ".prm")],
+         "-s", f"Propagation/Level set update/Model name={name}"] + settings +
+        [os.path.join(top, "prm", "benchmarks", scene + ".prm")],
         env=env, capture_output=True, text=True)
     wall = time.time() - start
     with open(os.path.join(out, "statistics.csv")) as f:

@@ -45,7 +45,9 @@ namespace xcrack
                     std::to_string(static_cast<std::size_t>(total)) +
                     " points (more than " + std::to_string(max_points) +
                     "); give a larger spacing or a smaller Band radius.");
-      active.assign(static_cast<std::size_t>(total), 1);
+      std::vector<char> all(static_cast<std::size_t>(total), 1);
+      active.resize(all.size());
+      set_active(all);
     }
 
 
@@ -141,6 +143,21 @@ namespace xcrack
     {
       AssertDimension(flags.size(), active.size());
       active = flags;
+      points.clear();
+      stencils.clear();
+      for (std::size_t i = 0; i < active.size(); ++i)
+        if (active[i])
+          {
+            points.push_back(i);
+            std::array<unsigned int, 2 * dim> stencil;
+            for (unsigned int d = 0; d < dim; ++d)
+              for (unsigned int side = 0; side < 2; ++side)
+                {
+                  const std::size_t j   = neighbour(i, d, side);
+                  stencil[2 * d + side] = (j == none ? missing : j);
+                }
+            stencils.push_back(stencil);
+          }
     }
 
 
@@ -173,7 +190,7 @@ namespace xcrack
     std::size_t
     BandGrid<dim>::n_active() const
     {
-      return std::count(active.begin(), active.end(), 1);
+      return points.size();
     }
 
 

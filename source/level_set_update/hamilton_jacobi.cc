@@ -11,30 +11,31 @@ namespace xcrack
     {
       namespace
       {
-        /// The one-sided differences of @p phi at point @p i along @p d:
-        /// (backward, forward), 0 towards a missing neighbour. Godunov's
-        /// rule then reads a missing side as bringing no information: an
-        /// edge point moves with what comes from inside the band, and a
-        /// difference is never taken downwind (unstable).
+        /// The one-sided differences of @p phi at the @p p th active point
+        /// along @p d: (backward, forward), 0 towards a missing neighbour.
+        /// Godunov's rule then reads a missing side as bringing no
+        /// information: an edge point moves with what comes from inside the
+        /// band, and a difference is never taken downwind (unstable).
         template <int dim>
         std::pair<double, double>
         differences(const BandGrid<dim>       &grid,
                     const std::vector<double> &phi,
-                    const std::size_t          i,
+                    const std::size_t          p,
                     const unsigned int         d)
         {
-          const std::size_t lo = grid.neighbour(i, d, 0),
-                            hi = grid.neighbour(i, d, 1);
-          const double h       = grid.spacing(d);
-          return {(lo == BandGrid<dim>::none ? 0. : (phi[i] - phi[lo]) / h),
-                  (hi == BandGrid<dim>::none ? 0. : (phi[hi] - phi[i]) / h)};
+          const auto        &stencil = grid.stencil(p);
+          const unsigned int lo = stencil[2 * d], hi = stencil[2 * d + 1];
+          const unsigned int i = grid.active_points()[p];
+          const double       h = grid.spacing(d);
+          return {(lo == BandGrid<dim>::missing ? 0. : (phi[i] - phi[lo]) / h),
+                  (hi == BandGrid<dim>::missing ? 0. : (phi[hi] - phi[i]) / h)};
         }
 
 
 
         /**
-         * |grad phi| at point @p i by Godunov's upwind rule for a front
-         * moving along grad phi (@p positive) or against it: of the two
+         * |grad phi| at the @p p th active point by Godunov's upwind rule for a
+         * front moving along grad phi (@p positive) or against it: of the two
          * one-sided differences per direction, the one the information
          * comes from.
          */
@@ -42,13 +43,13 @@ namespace xcrack
         double
         godunov_norm(const BandGrid<dim>       &grid,
                      const std::vector<double> &phi,
-                     const std::size_t          i,
+                     const std::size_t          p,
                      const bool                 positive)
         {
           double sum = 0;
           for (unsigned int d = 0; d < dim; ++d)
             {
-              const auto [a, b] = differences(grid, phi, i, d);
+              const auto [a, b] = differences(grid, phi, p, d);
               sum += (positive ? std::max(std::pow(std::max(a, 0.), 2),
                                           std::pow(std::min(b, 0.), 2)) :
                                  std::max(std::pow(std::min(a, 0.), 2),
@@ -105,10 +106,10 @@ namespace xcrack
                 const std::vector<double> &speed,
                 std::vector<double>       &phi)
       {
-        double fastest = 0;
-        for (std::size_t i = 0; i < grid.size(); ++i)
-          if (grid.is_active(i))
-            fastest = std::max(fastest, std::abs(speed[i]));
+        const std::vector<unsigned int> &points  = grid.active_points();
+        double                           fastest = 0;
+        for (const unsigned int i : points)
+          fastest = std::max(fastest, std::abs(speed[i]));
         if (fastest == 0)
           return;
         const double       dx = grid.min_spacing();
@@ -116,19 +117,20 @@ namespace xcrack
           std::max(1., std::ceil(fastest / (0.5 * dx)));
         const double dt = 1. / n_steps;
 
-        std::vector<std::size_t> interior;
-        for (std::size_t i = 0; i < grid.size(); ++i)
-          if (grid.is_active(i))
-            interior.push_back(i);
-        std::vector<double> next = phi;
+        std::vector<double> next(points.size());
         for (unsigned int step = 0; step < n_steps; ++step)
           {
-            for (const std::size_t i : interior)
-              if (speed[i] != 0)
-                next[i] = phi[i] - dt * speed[i] *
-                                     godunov_norm(grid, phi, i, speed[i] > 0);
-            for (const std::size_t i : interior)
-              phi[i] = next[i];
+            for (std::size_t p = 0; p < points.size(); ++p)
+              {
+                const unsigned int i = points[p];
+                next[p] =
+                  (speed[i] == 0 ?
+                     phi[i] :
+                     phi[i] - dt * speed[i] *
+                                godunov_norm(grid, phi, p, speed[i] > 0));
+              }
+            for (std::size_t p = 0; p < points.size(); ++p)
+              phi[points[p]] = next[p];
           }
       }
 
@@ -141,54 +143,58 @@ namespace xcrack
                    const double         width,
                    const double         tolerance)
       {
-        const double              dx   = grid.min_spacing();
-        const std::vector<double> phi0 = phi;
+        const std::vector<unsigned int> &points = grid.active_points();
+        const double                     dx     = grid.min_spacing();
+        const std::vector<double>        phi0   = phi;
         // The points next to the zero set: set once by projection on it.
         std::vector<std::size_t> free;
-        for (std::size_t i = 0; i < grid.size(); ++i)
-          if (grid.is_active(i))
-            {
-              bool   next_to_zero = (phi0[i] == 0);
-              double norm2        = 0;
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  const std::size_t lo = grid.neighbour(i, d, 0),
-                                    hi = grid.neighbour(i, d, 1);
-                  double g             = 0;
-                  for (const std::size_t j : {lo, hi})
-                    if (j != BandGrid<dim>::none)
-                      {
-                        next_to_zero =
-                          next_to_zero || (phi0[j] > 0) != (phi0[i] > 0);
-                        g = std::max(g, std::abs(phi0[j] - phi0[i]));
-                      }
-                  if (lo != BandGrid<dim>::none && hi != BandGrid<dim>::none)
-                    g = std::max(g, std::abs(phi0[hi] - phi0[lo]) / 2);
-                  norm2 += std::pow(g / grid.spacing(d), 2);
-                }
-              if (next_to_zero)
-                phi[i] = (norm2 > 0 ? phi0[i] / std::sqrt(norm2) : 0.);
-              else
-                free.push_back(i);
-            }
+        for (std::size_t p = 0; p < points.size(); ++p)
+          {
+            const unsigned int i            = points[p];
+            const auto        &stencil      = grid.stencil(p);
+            bool               next_to_zero = (phi0[i] == 0);
+            double             norm2        = 0;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const unsigned int lo = stencil[2 * d], hi = stencil[2 * d + 1];
+                double             g = 0;
+                for (const unsigned int j : {lo, hi})
+                  if (j != BandGrid<dim>::missing)
+                    {
+                      next_to_zero =
+                        next_to_zero || (phi0[j] > 0) != (phi0[i] > 0);
+                      g = std::max(g, std::abs(phi0[j] - phi0[i]));
+                    }
+                if (lo != BandGrid<dim>::missing &&
+                    hi != BandGrid<dim>::missing)
+                  g = std::max(g, std::abs(phi0[hi] - phi0[lo]) / 2);
+                norm2 += std::pow(g / grid.spacing(d), 2);
+              }
+            if (next_to_zero)
+              phi[i] = (norm2 > 0 ? phi0[i] / std::sqrt(norm2) : 0.);
+            else
+              free.push_back(p);
+          }
 
         const double        dt         = 0.5 * dx;
         const unsigned int  iterations = max_iterations(grid, width, dt);
-        std::vector<double> next       = phi;
-        unsigned int        k          = 0;
+        std::vector<double> next(free.size());
+        unsigned int        k = 0;
         for (; k < iterations; ++k)
           {
             double change = 0;
-            for (const std::size_t i : free)
+            for (std::size_t f = 0; f < free.size(); ++f)
               {
-                const double s =
+                const std::size_t  p = free[f];
+                const unsigned int i = points[p];
+                const double       s =
                   phi0[i] / std::sqrt(phi0[i] * phi0[i] + dx * dx);
-                next[i] =
-                  phi[i] - dt * s * (godunov_norm(grid, phi, i, s > 0) - 1);
-                change = std::max(change, std::abs(next[i] - phi[i]));
+                next[f] =
+                  phi[i] - dt * s * (godunov_norm(grid, phi, p, s > 0) - 1);
+                change = std::max(change, std::abs(next[f] - phi[i]));
               }
-            for (const std::size_t i : free)
-              phi[i] = next[i];
+            for (std::size_t f = 0; f < free.size(); ++f)
+              phi[points[free[f]]] = next[f];
             if (change < tolerance * dx)
               break;
           }
@@ -205,42 +211,44 @@ namespace xcrack
                     const double               width,
                     const double               tolerance)
       {
-        const double dx = grid.min_spacing();
+        const std::vector<unsigned int> &points = grid.active_points();
+        const double                     dx     = grid.min_spacing();
         // The velocity S(phi) n, fixed during the iterations.
-        std::vector<std::size_t>    points;
+        std::vector<std::size_t>    moving;
         std::vector<Tensor<1, dim>> velocity;
-        for (std::size_t i = 0; i < grid.size(); ++i)
-          if (grid.is_active(i))
-            {
-              const Tensor<1, dim> g = gradient(grid, phi, i);
-              if (g.norm() == 0)
-                continue;
-              points.push_back(i);
-              velocity.push_back(phi[i] / std::sqrt(phi[i] * phi[i] + dx * dx) *
-                                 g / g.norm());
-            }
+        for (std::size_t p = 0; p < points.size(); ++p)
+          {
+            const unsigned int   i = points[p];
+            const Tensor<1, dim> g = gradient(grid, phi, i);
+            if (g.norm() == 0)
+              continue;
+            moving.push_back(p);
+            velocity.push_back(phi[i] / std::sqrt(phi[i] * phi[i] + dx * dx) *
+                               g / g.norm());
+          }
 
         const double        dt         = 0.5 * dx;
         const unsigned int  iterations = max_iterations(grid, width, dt);
-        std::vector<double> next       = psi;
-        unsigned int        k          = 0;
+        std::vector<double> next(moving.size());
+        unsigned int        k = 0;
         for (; k < iterations; ++k)
           {
             double change = 0;
-            for (std::size_t p = 0; p < points.size(); ++p)
+            for (std::size_t m = 0; m < moving.size(); ++m)
               {
-                const std::size_t i    = points[p];
-                double            rate = 0;
+                const std::size_t  p    = moving[m];
+                const unsigned int i    = points[p];
+                double             rate = 0;
                 for (unsigned int d = 0; d < dim; ++d)
                   {
-                    const auto [a, b] = differences(grid, psi, i, d);
-                    rate += velocity[p][d] * (velocity[p][d] > 0 ? a : b);
+                    const auto [a, b] = differences(grid, psi, p, d);
+                    rate += velocity[m][d] * (velocity[m][d] > 0 ? a : b);
                   }
-                next[i] = psi[i] - dt * rate;
-                change  = std::max(change, std::abs(next[i] - psi[i]));
+                next[m] = psi[i] - dt * rate;
+                change  = std::max(change, std::abs(next[m] - psi[i]));
               }
-            for (const std::size_t i : points)
-              psi[i] = next[i];
+            for (std::size_t m = 0; m < moving.size(); ++m)
+              psi[points[moving[m]]] = next[m];
             if (change < tolerance * dx)
               break;
           }

@@ -94,6 +94,26 @@ namespace xcrack
       std::size_t
       n_active() const;
 
+      /// No neighbour in a stencil().
+      static constexpr unsigned int missing = static_cast<unsigned int>(-1);
+
+      /// The active points' indices, increasing: what the schemes loop
+      /// over.
+      const std::vector<unsigned int> &
+      active_points() const
+      {
+        return points;
+      }
+
+      /// The neighbours of the @p p th active point: entry 2 d + side as
+      /// neighbour(), missing for none. A table, because the schemes ask
+      /// for them hundreds of times per point.
+      const std::array<unsigned int, 2 * dim> &
+      stencil(const std::size_t p) const
+      {
+        return stencils[p];
+      }
+
       /**
        * The Q1 fields lsn and lst of crack @p crack at the lattice points
        * inside the mesh (the smallest value over the cells that contain a
@@ -123,10 +143,12 @@ namespace xcrack
       std::array<unsigned int, dim>
       coordinates(const std::size_t i) const;
 
-      Point<dim>                    lower;
-      std::array<unsigned int, dim> n_points;
-      std::array<double, dim>       h;
-      std::vector<char>             active;
+      Point<dim>                                     lower;
+      std::array<unsigned int, dim>                  n_points;
+      std::array<double, dim>                        h;
+      std::vector<char>                              active;
+      std::vector<unsigned int>                      points;
+      std::vector<std::array<unsigned int, 2 * dim>> stencils;
     };
   } // namespace LevelSetUpdate
 } // namespace xcrack

@@ -29,8 +29,9 @@ namespace xcrack
    * the advance), `upwind` (Hamilton-Jacobi on an auxiliary grid), and to
    * come `simplex` (the same on a simplicial split), each one more file
    * pair. What they share (the moves along a front by abscissa, the
-   * projection on a front, the default band) is in front_track.h. A method that keeps state
-   * across steps (a surface) saves and loads it with the checkpoint.
+   * projection on a front, the default band) is in front_track.h. A method that
+   * keeps state across steps (a surface) saves and loads it with the
+   * checkpoint.
    */
   namespace LevelSetUpdate
   {
