@@ -38,12 +38,13 @@ namespace xcrack
         "Maximum advance.");
       prm.declare_entry(
         "Grid spacing",
-        "0.5",
+        "1",
         Patterns::Double(),
         "The spacing of the auxiliary grid, in edges of the cells at the "
         "front (> 0). The cost grows as its inverse to the power of the "
-        "dimension plus one; the diffusion of the scheme shrinks with it "
-        "(doc/verification/level-set-update.md).");
+        "dimension plus one: in 3D, 1 costs 7 to 9 times the geometric "
+        "update (2 to 4 % of a run), 0.5 ten times more; the diffusion of "
+        "the scheme shrinks with it (doc/verification/level-set-update.md).");
       prm.leave_subsection();
     }
 

@@ -68,7 +68,7 @@ namespace xcrack
 
       double band_radius = 0;
       /// The grid spacing in edges of the front cells.
-      double spacing = 0.5;
+      double spacing = 1;
       /// The most grid points allowed.
       double max_points = 2e7;
     };
