@@ -16,8 +16,10 @@ the cells at the front):
   they show against the one asked for.
 - straight (3D): the straight front of prm/benchmarks/exact_mode_I_3d.prm
   (the Williams field on the boundary, K_I uniform) on its second mesh (h
-  = 1/4), three steps: the front should stay straight and in its plane.
-  Its spread along x and its largest |y|, in h.
+  = 1/4), the body [-1, 5] x [-1, 1]^2 shifted by (0.0123, 0.0371) so that
+  neither the crack plane nor the front lies on nodes, three steps: the
+  front should stay straight and in its plane. Its spread along x and its
+  largest |y|, in h.
 - penny (3D): the coarse penny of tests/sif_penny_3d.prm.in (front cells
   of edge 1/4), three steps: the radius scatter of the last front (largest
   less smallest radius of its points), in h.
@@ -47,7 +49,10 @@ SCENES = {
              "steps": 1, "entries": ["Mesh refinement/Number of meshes=4"]},
     "straight": {"prm": "prm/benchmarks/exact_mode_I_3d.prm", "h": 0.25,
                  "steps": 3,
-                 "entries": ["Mesh refinement/Number of meshes=2"]},
+                 "entries": ["Mesh refinement/Number of meshes=2",
+                             "Mesh/Lower corner=-1.0123, -1.0371, -1",
+                             "Mesh/Upper corner=4.9877, 0.9629, 1",
+                             "Mesh/Subdivisions=12, 4, 4"]},
     "penny": {"prm": "tests/sif_penny_3d.prm.in", "h": 0.25, "steps": 3,
               "entries": ["Mesh refinement/Maximum level=2",
                           "Mesh refinement/Front/Coarsening band=3"]},
@@ -130,6 +135,7 @@ def run(scene, method, fraction):
         out = os.path.join(work, "out")
         command = [xcrack, "-s", f"Output directory={out}",
                    "-s", "Output/Timing summary=false",
+                   "-s", "Output/Write vtu=true",
                    "-s", f"Propagation/Number of steps={spec['steps']}",
                    "-s", f"Propagation/Maximum advance={fraction * h}",
                    "-s", f"Propagation/Level set update/Model name={method}"]

@@ -196,6 +196,27 @@ namespace xcrack
 
 
 
+    template <int dim>
+    double
+    finest_front_cell_size(const LevelSetFields<dim> &fields,
+                           const unsigned int         crack,
+                           const MPI_Comm             communicator)
+    {
+      const std::vector<double> lsn = fields.vertex_values(crack, true);
+      const std::vector<double> lst = fields.vertex_values(crack, false);
+      double                    h   = std::numeric_limits<double>::max();
+      for (const auto &cell :
+           fields.get_dof_handler().get_triangulation().active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int v : cell->vertex_indices())
+            if (std::hypot(lsn[cell->vertex_index(v)],
+                           lst[cell->vertex_index(v)]) < cell->diameter())
+              h = std::min(h, cell->diameter());
+      return Utilities::MPI::min(h, communicator);
+    }
+
+
+
     double
     default_band(const double enrichment_radius,
                  const double h,
@@ -219,7 +240,10 @@ namespace xcrack
     const std::vector<std::vector<FrontPoint<dim>>> &, const Point<dim> &); \
   template double front_cell_size(const LevelSetFields<dim> &,              \
                                   const unsigned int,                       \
-                                  const MPI_Comm);
+                                  const MPI_Comm);                          \
+  template double finest_front_cell_size(const LevelSetFields<dim> &,       \
+                                         const unsigned int,                \
+                                         const MPI_Comm);
     XCRACK_INSTANTIATE(2)
     XCRACK_INSTANTIATE(3)
 #undef XCRACK_INSTANTIATE

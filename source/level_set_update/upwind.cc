@@ -137,10 +137,12 @@ namespace xcrack
         make_tracks(crack, moves, fronts, largest);
       if (largest == 0)
         return;
-      const MPI_Comm comm   = this->get_mpi_communicator();
-      const double   h      = front_cell_size(fields, crack, comm);
-      const double   dx     = spacing * h / std::sqrt(dim);
-      const double   radius = band(h, largest);
+      const MPI_Comm comm = this->get_mpi_communicator();
+      // The cells that resolve the front set the grid and the band (the
+      // largest cells that reach it are coarse ones on a graded mesh).
+      const double h      = finest_front_cell_size(fields, crack, comm);
+      const double dx     = spacing * h / std::sqrt(dim);
+      const double radius = band(h, largest);
       // The grid reaches a little beyond the band, so that the grid cells of
       // the mesh nodes in the band have all their corners.
       const double reach = radius + largest + 2 * dx;

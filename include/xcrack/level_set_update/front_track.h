@@ -116,6 +116,16 @@ namespace xcrack
                     const unsigned int         crack,
                     const MPI_Comm             communicator);
 
+    /// The smallest diameter of the cells at the front of crack @p crack
+    /// (collective; the same cells as front_cell_size()): on a mesh graded
+    /// towards the front, the cells that resolve it, where the largest one
+    /// is a coarse cell that merely reaches it.
+    template <int dim>
+    double
+    finest_front_cell_size(const LevelSetFields<dim> &fields,
+                           const unsigned int         crack,
+                           const MPI_Comm             communicator);
+
     /**
      * The band around the front in which an update gives nodes new level
      * sets, when the user sets none: twice the larger of the enrichment

@@ -31,7 +31,8 @@ namespace xcrack
      * 5. lst reinitialised.
      *
      * The grid covers the body's points within the band of the front (its
-     * radius as `geometric`'s, at least the crowns plus the advance); its
+     * radius by `geometric`'s rule, with the finest cells at the front: at
+     * least the crowns plus the advance); its
      * edge points take the closed form of each propagation phase (no ghost
      * points), the fields come from the mesh by the Q1 interpolant and go
      * back by d-linear interpolation. Mesh nodes beyond the band keep lsn,
