@@ -146,6 +146,20 @@ namespace xcrack
       // The grid reaches a little beyond the band, so that the grid cells of
       // the mesh nodes in the band have all their corners.
       const double reach = radius + largest + 2 * dx;
+      if (largest < dx && !warned_short_advance)
+        {
+          // The study of doc/verification/level-set-update.md: a tip asked
+          // to move by 0.1 cell moved by 0.3.
+          this->get_pcout()
+            << "  Warning: the largest advance (" << largest
+            << ") is shorter than the upwind update's grid spacing (" << dx
+            << "): its first-order scheme moves a front by a fraction of a "
+               "grid cell per step of its own, which such a step does not "
+               "outweigh. Take a larger Propagation/Maximum advance or a "
+               "smaller Propagation/Level set update/Upwind/Grid spacing."
+            << std::endl;
+          warned_short_advance = true;
+        }
 
       Point<dim> lower, upper;
       for (unsigned int d = 0; d < dim; ++d)

@@ -72,6 +72,8 @@ namespace xcrack
       double spacing = 1;
       /// The most grid points allowed.
       double max_points = 2e7;
+      /// Whether the run was told that its advance is below the grid.
+      bool warned_short_advance = false;
     };
   } // namespace LevelSetUpdate
 } // namespace xcrack
