@@ -30,12 +30,13 @@ namespace xcrack
      * 4. lst made orthogonal to lsn (its zero on the crack surface kept);
      * 5. lst reinitialised.
      *
-     * The grid covers the body's points within the band of the front (its
-     * radius by `geometric`'s rule, with the finest cells at the front: at
-     * least the crowns plus the advance); its
-     * edge points take the closed form of each propagation phase (no ghost
-     * points), the fields come from the mesh by the Q1 interpolant and go
-     * back by d-linear interpolation. Mesh nodes beyond the band keep lsn,
+     * The grid covers the body's points within the band of the front (the
+     * larger of the enrichment radius and six of the finest front cells,
+     * plus twice the advance: the crowns and the new front inside); at its
+     * edge a missing neighbour brings no information (no ghost points), and
+     * the points next to a zero set are reinitialised by projection on it.
+     * The fields come from the mesh by the Q1 interpolant and go back by
+     * d-linear interpolation. Mesh nodes beyond the band keep lsn,
      * and lst keeps its sign, as with `geometric`. The grid is built anew
      * at each step: nothing to checkpoint.
      */
