@@ -130,6 +130,114 @@ namespace xcrack
 
 
 
+    namespace
+    {
+      /**
+       * The band's points of @p grid: those in the body (@p phi not NaN)
+       * within @p reach of the old fronts @p fronts. At each, @p kink and
+       * @p advance get the kink (towards lsn > 0) and the advance of its
+       * projection on the fronts, from the moves' @p tracks: the
+       * velocities extended from the front.
+       */
+      template <int dim>
+      std::vector<char>
+      extend_moves(const BandGrid<dim>                             &grid,
+                   const std::vector<double>                       &phi,
+                   const std::vector<std::vector<FrontPoint<dim>>> &fronts,
+                   const std::vector<Track<dim>>                   &tracks,
+                   const double                                     reach,
+                   std::vector<double>                             &kink,
+                   std::vector<double>                             &advance)
+      {
+        std::vector<char> active(grid.size(), 0);
+        kink.assign(grid.size(), 0.);
+        advance.assign(grid.size(), 0.);
+        std::vector<unsigned int> front_of(grid.size(), 0);
+        // Which way lsn counts along e2 at each front (e2 of the frame of K
+        // need not point to the lsn > 0 side): behind a front lsn = +-(d .
+        // e2).
+        std::vector<double> orientation(fronts.size(), 0.);
+        for (std::size_t i = 0; i < grid.size(); ++i)
+          {
+            if (std::isnan(phi[i]))
+              continue;
+            const Point<dim> x       = grid.point(i);
+            const auto [front, s, p] = project(fronts, x);
+            if (x.distance(p) > reach)
+              continue;
+            active[i]                = 1;
+            const Sample<dim> sample = tracks[front].at(s);
+            kink[i]                  = sample.angle;
+            advance[i]               = sample.advance;
+            front_of[i]              = front;
+            if ((x - p) * sample.old_direction() < 0)
+              orientation[front] += phi[i] * ((x - p) * sample.old_normal());
+          }
+        for (std::size_t i = 0; i < grid.size(); ++i)
+          if (active[i] && orientation[front_of[i]] < 0)
+            kink[i] = -kink[i];
+        return active;
+      }
+
+
+
+      /**
+       * Give crack @p crack of @p fields the fields @p phi, @p psi of
+       * @p grid: the mesh nodes within @p radius of the old fronts
+       * @p fronts by interpolation; the others as the geometric update's
+       * far nodes (lsn kept, lst behind the front lowered by the largest
+       * advance @p largest, ahead kept).
+       */
+      template <int dim>
+      void
+      write_back(const BandGrid<dim>                             &grid,
+                 const std::vector<double>                       &phi,
+                 const std::vector<double>                       &psi,
+                 const std::vector<std::vector<FrontPoint<dim>>> &fronts,
+                 const double                                     radius,
+                 const double                                     largest,
+                 const unsigned int                               crack,
+                 LevelSetFields<dim>                             &fields)
+      {
+        const DoFHandler<dim> &dof_handler = fields.get_dof_handler();
+        const MPI_Comm         comm        = dof_handler.get_communicator();
+        std::map<types::global_dof_index, Point<dim>> support;
+        DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
+                                             dof_handler,
+                                             support);
+        const IndexSet                owned = dof_handler.locally_owned_dofs();
+        TrilinosWrappers::MPI::Vector new_lsn(owned, comm),
+          new_lst(owned, comm);
+        const auto &old_lsn = fields.lsn(crack);
+        const auto &old_lst = fields.lst(crack);
+        for (const types::global_dof_index dof : owned)
+          {
+            const Point<dim> &x  = support.at(dof);
+            const double      t0 = old_lst[dof];
+            new_lsn[dof]         = old_lsn[dof];
+            new_lst[dof]         = (t0 <= 0 ? t0 - largest : t0);
+            // (weights() is empty off the grid.)
+            const auto weights = grid.weights(x);
+            if (weights.empty() ||
+                x.distance(std::get<2>(project(fronts, x))) > radius)
+              continue;
+            double n = 0, t = 0;
+            for (const auto &[i, w] : weights)
+              {
+                n += w * phi[i];
+                t += w * psi[i];
+              }
+            new_lsn[dof] = n;
+            new_lst[dof] = t;
+          }
+        new_lsn.compress(VectorOperation::insert);
+        new_lst.compress(VectorOperation::insert);
+        fields.set(crack, new_lsn, new_lst);
+      }
+    } // namespace
+
+
+
     template <int dim>
     void
     Upwind<dim>::update(const unsigned int                 crack,
@@ -145,7 +253,11 @@ namespace xcrack
       const MPI_Comm comm = this->get_mpi_communicator();
       // The cells that resolve the front set the grid and the band (the
       // largest cells that reach it are coarse ones on a graded mesh).
-      const double h      = finest_front_cell_size(fields, crack, comm);
+      const double h = finest_front_cell_size(fields, crack, comm);
+      AssertThrow(h < std::numeric_limits<double>::max(),
+                  ExcMessage("The upwind level-set update found no cell at "
+                             "the front of crack " +
+                             std::to_string(crack + 1) + "."));
       const double dx     = spacing * h / std::sqrt(dim);
       const double radius = band(h, largest);
       // The grid reaches a little beyond the band, so that the grid cells of
@@ -185,84 +297,22 @@ namespace xcrack
                          static_cast<std::size_t>(max_points));
       auto [phi, psi] = grid.sample(fields, crack, comm);
 
-      // The band: the grid points in the body within reach of the old
-      // front, with the kink and advance of their projection on it (the
-      // velocities extended from the front).
-      std::vector<char>   active(grid.size(), 0);
-      std::vector<double> angle(grid.size(), 0.), advance(grid.size(), 0.);
-      std::vector<unsigned int> front_of(grid.size(), 0);
-      // Which way lsn counts along e2 at each front (e2 of the frame of K
-      // need not point to the lsn > 0 side): behind a front lsn = +-(d .
-      // e2).
-      std::vector<double> orientation(fronts.size(), 0.);
-      for (std::size_t i = 0; i < grid.size(); ++i)
-        {
-          if (std::isnan(phi[i]))
-            continue;
-          const Point<dim> x       = grid.point(i);
-          const auto [front, s, p] = project(fronts, x);
-          if (x.distance(p) > reach)
-            continue;
-          active[i]                = 1;
-          const Sample<dim> sample = tracks[front].at(s);
-          angle[i]                 = sample.angle;
-          advance[i]               = sample.advance;
-          front_of[i]              = front;
-          if ((x - p) * sample.old_direction() < 0)
-            orientation[front] += phi[i] * ((x - p) * sample.old_normal());
-        }
-      grid.set_active(active);
-
-      // The kinks towards lsn > 0.
-      for (std::size_t i = 0; i < grid.size(); ++i)
-        if (active[i] && orientation[front_of[i]] < 0)
-          angle[i] = -angle[i];
+      // The band, with the velocities extended from the front.
+      std::vector<double> kink, advance;
+      grid.set_active(
+        extend_moves(grid, phi, fronts, tracks, reach, kink, advance));
       const HamiltonJacobi::Iterations n =
-        HamiltonJacobi::move_front(grid, angle, advance, reach, phi, psi);
+        HamiltonJacobi::move_front(grid, kink, advance, reach, phi, psi);
       this->get_pcout() << "   Upwind update of crack " << crack + 1 << ": "
                         << grid.n_active() << " grid points, iterations "
                         << n.reinitialise_phi << ", " << n.orthogonalise << ", "
                         << n.reinitialise_psi << std::endl;
 
-      // Back to the mesh: the nodes in the band by interpolation, the
-      // others as the geometric update's far nodes.
-      const DoFHandler<dim> &dof_handler = fields.get_dof_handler();
-      std::map<types::global_dof_index, Point<dim>> support;
-      DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
-                                           dof_handler,
-                                           support);
-      const IndexSet                owned = dof_handler.locally_owned_dofs();
-      TrilinosWrappers::MPI::Vector new_lsn(owned, comm), new_lst(owned, comm);
-      const auto                   &old_lsn = fields.lsn(crack);
-      const auto                   &old_lst = fields.lst(crack);
-      for (const types::global_dof_index dof : owned)
-        {
-          const Point<dim> &x  = support.at(dof);
-          const double      t0 = old_lst[dof];
-          new_lsn[dof]         = old_lsn[dof];
-          new_lst[dof]         = (t0 <= 0 ? t0 - largest : t0);
-          bool in_box          = true;
-          for (unsigned int d = 0; d < dim; ++d)
-            in_box = in_box && x[d] >= lower[d] && x[d] <= upper[d];
-          if (!in_box ||
-              x.distance(std::get<2>(project(fronts, x))) > radius + largest)
-            continue;
-          const auto weights = grid.weights(x);
-          if (weights.empty())
-            continue;
-          double n = 0, t = 0;
-          for (const auto &[i, w] : weights)
-            {
-              n += w * phi[i];
-              t += w * psi[i];
-            }
-          new_lsn[dof] = n;
-          new_lst[dof] = t;
-        }
-      new_lsn.compress(VectorOperation::insert);
-      new_lst.compress(VectorOperation::insert);
-      fields.set(crack, new_lsn, new_lst);
+      write_back(
+        grid, phi, psi, fronts, radius + largest, largest, crack, fields);
     }
+
+
 
     XCRACK_REGISTER_PLUGIN(Interface,
                            Upwind,
