@@ -176,43 +176,52 @@ namespace xcrack
 
 
     template <int dim>
-    double
-    front_cell_size(const LevelSetFields<dim> &fields,
-                    const unsigned int         crack,
-                    const MPI_Comm             communicator)
+    FrontCellSizes
+    front_cell_sizes(const LevelSetFields<dim> &fields,
+                     const unsigned int         crack,
+                     const MPI_Comm             communicator)
     {
       const std::vector<double> lsn = fields.vertex_values(crack, true);
       const std::vector<double> lst = fields.vertex_values(crack, false);
-      double                    h   = 0;
+      // The finest and minus the largest, for one reduction.
+      std::vector<double> sizes(2, std::numeric_limits<double>::max());
       for (const auto &cell :
            fields.get_dof_handler().get_triangulation().active_cell_iterators())
         if (cell->is_locally_owned())
           for (const unsigned int v : cell->vertex_indices())
             if (std::hypot(lsn[cell->vertex_index(v)],
                            lst[cell->vertex_index(v)]) < cell->diameter())
-              h = std::max(h, cell->diameter());
-      return Utilities::MPI::max(h, communicator);
+              {
+                sizes[0] = std::min(sizes[0], cell->diameter());
+                sizes[1] = std::min(sizes[1], -cell->diameter());
+              }
+      Utilities::MPI::min(sizes, communicator, sizes);
+      return {sizes[0],
+              (sizes[1] == std::numeric_limits<double>::max() ? 0. :
+                                                                -sizes[1])};
     }
 
 
 
     template <int dim>
-    double
-    finest_front_cell_size(const LevelSetFields<dim> &fields,
-                           const unsigned int         crack,
-                           const MPI_Comm             communicator)
+    BoundingBox<dim>
+    front_box(const std::vector<std::vector<FrontPoint<dim>>> &fronts,
+              const double                                     margin)
     {
-      const std::vector<double> lsn = fields.vertex_values(crack, true);
-      const std::vector<double> lst = fields.vertex_values(crack, false);
-      double                    h   = std::numeric_limits<double>::max();
-      for (const auto &cell :
-           fields.get_dof_handler().get_triangulation().active_cell_iterators())
-        if (cell->is_locally_owned())
-          for (const unsigned int v : cell->vertex_indices())
-            if (std::hypot(lsn[cell->vertex_index(v)],
-                           lst[cell->vertex_index(v)]) < cell->diameter())
-              h = std::min(h, cell->diameter());
-      return Utilities::MPI::min(h, communicator);
+      Point<dim> lower, upper;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower[d] = std::numeric_limits<double>::max();
+          upper[d] = -std::numeric_limits<double>::max();
+        }
+      for (const auto &front : fronts)
+        for (const FrontPoint<dim> &point : front)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              lower[d] = std::min(lower[d], point.position[d] - margin);
+              upper[d] = std::max(upper[d], point.position[d] + margin);
+            }
+      return BoundingBox<dim>({lower, upper});
     }
 
 
@@ -238,12 +247,11 @@ namespace xcrack
   template bool is_closed(const std::vector<FrontPoint<dim>> &);            \
   template std::tuple<unsigned int, double, Point<dim>> project(            \
     const std::vector<std::vector<FrontPoint<dim>>> &, const Point<dim> &); \
-  template double front_cell_size(const LevelSetFields<dim> &,              \
-                                  const unsigned int,                       \
-                                  const MPI_Comm);                          \
-  template double finest_front_cell_size(const LevelSetFields<dim> &,       \
-                                         const unsigned int,                \
-                                         const MPI_Comm);
+  template FrontCellSizes   front_cell_sizes(const LevelSetFields<dim> &,   \
+                                             const unsigned int,            \
+                                             const MPI_Comm);               \
+  template BoundingBox<dim> front_box(                                      \
+    const std::vector<std::vector<FrontPoint<dim>>> &, const double);
     XCRACK_INSTANTIATE(2)
     XCRACK_INSTANTIATE(3)
 #undef XCRACK_INSTANTIATE

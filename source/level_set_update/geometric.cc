@@ -76,7 +76,7 @@ namespace xcrack
         return;
 
       const double h =
-        front_cell_size(fields, crack, this->get_mpi_communicator());
+        front_cell_sizes(fields, crack, this->get_mpi_communicator()).largest;
       const double           radius      = band(h, largest);
       const DoFHandler<dim> &dof_handler = fields.get_dof_handler();
       std::map<types::global_dof_index, Point<dim>> support;
@@ -100,31 +100,15 @@ namespace xcrack
       };
       // The box of the old fronts, widened by the band: nodes outside are
       // not projected.
-      Point<dim> lower, upper;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          lower[d] = std::numeric_limits<double>::max();
-          upper[d] = -std::numeric_limits<double>::max();
-        }
-      for (const auto &front : fronts)
-        for (const FrontPoint<dim> &point : front)
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              lower[d] =
-                std::min(lower[d], point.position[d] - radius - largest);
-              upper[d] =
-                std::max(upper[d], point.position[d] + radius + largest);
-            }
+      const BoundingBox<dim> box = front_box(fronts, radius + largest);
 
       std::vector<Node> band_nodes;
       for (const types::global_dof_index dof : owned)
         {
           const Point<dim> &x  = support.at(dof);
           const double      n0 = old_lsn[dof], t0 = old_lst[dof];
-          new_lsn[dof] = n0;
-          bool in_box  = true;
-          for (unsigned int d = 0; d < dim; ++d)
-            in_box = in_box && x[d] >= lower[d] && x[d] <= upper[d];
+          new_lsn[dof]      = n0;
+          const bool in_box = box.point_inside(x);
           const auto [front, s, p] =
             (in_box ? project(fronts, x) :
                       std::make_tuple(0u, 0., Point<dim>()));

@@ -253,7 +253,7 @@ namespace xcrack
       const MPI_Comm comm = this->get_mpi_communicator();
       // The cells that resolve the front set the grid and the band (the
       // largest cells that reach it are coarse ones on a graded mesh).
-      const double h = finest_front_cell_size(fields, crack, comm);
+      const double h = front_cell_sizes(fields, crack, comm).finest;
       AssertThrow(h < std::numeric_limits<double>::max(),
                   ExcMessage("The upwind level-set update found no cell at "
                              "the front of crack " +
@@ -278,20 +278,7 @@ namespace xcrack
           warned_short_advance = true;
         }
 
-      Point<dim> lower, upper;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          lower[d] = std::numeric_limits<double>::max();
-          upper[d] = -std::numeric_limits<double>::max();
-        }
-      for (const auto &front : fronts)
-        for (const FrontPoint<dim> &point : front)
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              lower[d] = std::min(lower[d], point.position[d] - reach);
-              upper[d] = std::max(upper[d], point.position[d] + reach);
-            }
-      BandGrid<dim> grid(BoundingBox<dim>({lower, upper}),
+      BandGrid<dim> grid(front_box(fronts, reach),
                          body_box(),
                          dx,
                          static_cast<std::size_t>(max_points));

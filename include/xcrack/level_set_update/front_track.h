@@ -1,6 +1,7 @@
 #ifndef xcrack_level_set_update_front_track_h
 #define xcrack_level_set_update_front_track_h
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 
@@ -107,24 +108,32 @@ namespace xcrack
     project(const std::vector<std::vector<FrontPoint<dim>>> &fronts,
             const Point<dim>                                &x);
 
-    /// The largest diameter of the cells at the front of crack @p crack of
-    /// @p fields (collective): the cells with a vertex nearer to the front
-    /// than the cell's diameter.
-    template <int dim>
-    double
-    front_cell_size(const LevelSetFields<dim> &fields,
-                    const unsigned int         crack,
-                    const MPI_Comm             communicator);
+    /// The smallest and the largest diameter of the cells at a front.
+    struct FrontCellSizes
+    {
+      double finest, largest;
+    };
 
-    /// The smallest diameter of the cells at the front of crack @p crack
-    /// (collective; the same cells as front_cell_size()): on a mesh graded
-    /// towards the front, the cells that resolve it, where the largest one
-    /// is a coarse cell that merely reaches it.
+    /**
+     * The diameters of the cells at the front of crack @p crack of
+     * @p fields (collective): the cells with a vertex nearer to the front
+     * than the cell's diameter. On a mesh graded towards the front the
+     * finest are the cells that resolve it, the largest a coarse cell that
+     * merely reaches it.
+     */
     template <int dim>
-    double
-    finest_front_cell_size(const LevelSetFields<dim> &fields,
-                           const unsigned int         crack,
-                           const MPI_Comm             communicator);
+    FrontCellSizes
+    front_cell_sizes(const LevelSetFields<dim> &fields,
+                     const unsigned int         crack,
+                     const MPI_Comm             communicator);
+
+    /// The bounding box of the points of @p fronts, widened by @p margin
+    /// on every side: nodes outside it are farther than @p margin from
+    /// every front, and an update need not project them.
+    template <int dim>
+    BoundingBox<dim>
+    front_box(const std::vector<std::vector<FrontPoint<dim>>> &fronts,
+              const double                                     margin);
 
     /**
      * The band around the front in which an update gives nodes new level
