@@ -2,6 +2,7 @@
 #define xcrack_level_set_update_upwind_h
 
 #include <xcrack/level_set_update/interface.h>
+#include <xcrack/level_set_update/narrow_band.h>
 #include <xcrack/simulator_access.h>
 
 namespace xcrack
@@ -59,16 +60,11 @@ namespace xcrack
              LevelSetFields<dim>               &fields) override;
 
     private:
-      /// The band radius for front cells of size @p h (diameter) and a
-      /// largest advance @p largest_advance.
-      double
-      band(const double h, const double largest_advance) const;
-
       /// The bounding box of the body (collective).
       BoundingBox<dim>
       body_box() const;
 
-      double band_radius = 0;
+      NarrowBand narrow_band;
       /// The grid spacing in edges of the front cells.
       double spacing = 1;
       /// The most grid points allowed.

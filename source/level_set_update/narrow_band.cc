@@ -1,0 +1,180 @@
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <xcrack/input_error.h>
+#include <xcrack/level_set_update/narrow_band.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace xcrack
+{
+  namespace LevelSetUpdate
+  {
+    void
+    NarrowBand::declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Band radius",
+        "0",
+        Patterns::Double(0),
+        "The update covers the points of the body within this distance of "
+        "the front (plus the advance); mesh nodes farther away keep lsn, "
+        "and lst keeps its sign. 0: the larger of the enrichment radius and "
+        "six diameters of the finest front cells, plus twice the largest "
+        "advance (half the geometric update's first term: the cost goes "
+        "with the band's cross-section). At least Propagation/Maximum "
+        "advance.");
+    }
+
+
+
+    void
+    NarrowBand::parse_parameters(ParameterHandler &prm, const std::string &p)
+    {
+      band_radius = prm.get_double("Band radius");
+      path        = p;
+    }
+
+
+
+    void
+    NarrowBand::check_advance(const double maximum_advance) const
+    {
+      std::ostringstream message;
+      message << path << "/Band radius = " << band_radius
+              << " is narrower than Propagation/Maximum advance = "
+              << maximum_advance
+              << ": the new front would leave the band. Give a band at least "
+                 "the crowns' radius plus the advance, or 0.";
+      check_input(band_radius == 0 || band_radius >= maximum_advance,
+                  message.str());
+    }
+
+
+
+    double
+    NarrowBand::radius(const double enrichment_radius,
+                       const double h,
+                       const double largest_advance) const
+    {
+      if (band_radius > 0)
+        return band_radius;
+      return std::max(enrichment_radius, 6 * h) + 2 * largest_advance;
+    }
+
+
+
+    template <int dim>
+    std::vector<char>
+    extend_moves(const std::size_t                                n,
+                 const std::function<Point<dim>(std::size_t)>    &point_of,
+                 const std::vector<double>                       &phi,
+                 const std::vector<std::vector<FrontPoint<dim>>> &fronts,
+                 const std::vector<Track<dim>>                   &tracks,
+                 const double                                     reach,
+                 std::vector<double>                             &kink,
+                 std::vector<double>                             &advance)
+    {
+      std::vector<char> active(n, 0);
+      kink.assign(n, 0.);
+      advance.assign(n, 0.);
+      std::vector<unsigned int> front_of(n, 0);
+      // Which way lsn counts along e2 at each front (e2 of the frame of K
+      // need not point to the lsn > 0 side): behind a front lsn = +-(d .
+      // e2).
+      std::vector<double> orientation(fronts.size(), 0.);
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          if (std::isnan(phi[i]))
+            continue;
+          const Point<dim> x       = point_of(i);
+          const auto [front, s, p] = project(fronts, x);
+          if (x.distance(p) > reach)
+            continue;
+          active[i]                = 1;
+          const Sample<dim> sample = tracks[front].at(s);
+          kink[i]                  = sample.angle;
+          advance[i]               = sample.advance;
+          front_of[i]              = front;
+          if ((x - p) * sample.old_direction() < 0)
+            orientation[front] += phi[i] * ((x - p) * sample.old_normal());
+        }
+      for (std::size_t i = 0; i < n; ++i)
+        if (active[i] && orientation[front_of[i]] < 0)
+          kink[i] = -kink[i];
+      return active;
+    }
+
+
+
+    template <int dim>
+    void
+    write_back(const std::function<bool(const Point<dim> &, double &, double &)>
+                                                               &band_values,
+               const std::vector<std::vector<FrontPoint<dim>>> &fronts,
+               const double                                     radius,
+               const double                                     largest,
+               const unsigned int                               crack,
+               LevelSetFields<dim>                             &fields)
+    {
+      const DoFHandler<dim> &dof_handler = fields.get_dof_handler();
+      const MPI_Comm         comm        = dof_handler.get_communicator();
+      std::map<types::global_dof_index, Point<dim>> support;
+      DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
+                                           dof_handler,
+                                           support);
+      const IndexSet                owned = dof_handler.locally_owned_dofs();
+      TrilinosWrappers::MPI::Vector new_lsn(owned, comm), new_lst(owned, comm);
+      const auto                   &old_lsn = fields.lsn(crack);
+      const auto                   &old_lst = fields.lst(crack);
+      for (const types::global_dof_index dof : owned)
+        {
+          const Point<dim> &x  = support.at(dof);
+          const double      t0 = old_lst[dof];
+          double            n, t;
+          // (The band's values first: a cheap test that skips the
+          // projection of the nodes far from the front.)
+          if (band_values(x, n, t) &&
+              x.distance(std::get<2>(project(fronts, x))) <= radius)
+            {
+              new_lsn[dof] = n;
+              new_lst[dof] = t;
+            }
+          else
+            {
+              new_lsn[dof] = old_lsn[dof];
+              new_lst[dof] = (t0 <= 0 ? t0 - largest : t0);
+            }
+        }
+      new_lsn.compress(VectorOperation::insert);
+      new_lst.compress(VectorOperation::insert);
+      fields.set(crack, new_lsn, new_lst);
+    }
+
+
+
+#define XCRACK_INSTANTIATE(dim)                                          \
+  template std::vector<char> extend_moves(                               \
+    const std::size_t,                                                   \
+    const std::function<Point<dim>(std::size_t)> &,                      \
+    const std::vector<double> &,                                         \
+    const std::vector<std::vector<FrontPoint<dim>>> &,                   \
+    const std::vector<Track<dim>> &,                                     \
+    const double,                                                        \
+    std::vector<double> &,                                               \
+    std::vector<double> &);                                              \
+  template void write_back(                                              \
+    const std::function<bool(const Point<dim> &, double &, double &)> &, \
+    const std::vector<std::vector<FrontPoint<dim>>> &,                   \
+    const double,                                                        \
+    const double,                                                        \
+    const unsigned int,                                                  \
+    LevelSetFields<dim> &);
+    XCRACK_INSTANTIATE(2)
+    XCRACK_INSTANTIATE(3)
+#undef XCRACK_INSTANTIATE
+  } // namespace LevelSetUpdate
+} // namespace xcrack
