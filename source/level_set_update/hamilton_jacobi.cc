@@ -257,9 +257,9 @@ namespace xcrack
 
 
 
-      template <int dim>
+      template <class Band>
       Iterations
-      move_front(const BandGrid<dim>       &grid,
+      move_front(const Band                &grid,
                  const std::vector<double> &kink,
                  const std::vector<double> &advance,
                  const double               width,
@@ -307,6 +307,12 @@ namespace xcrack
                                         const double,                \
                                         const double);               \
   template Iterations     move_front(const BandGrid<dim> &,          \
+                                     const std::vector<double> &,    \
+                                     const std::vector<double> &,    \
+                                     const double,                   \
+                                     std::vector<double> &,          \
+                                     std::vector<double> &);         \
+  template Iterations     move_front(const SimplexBand<dim> &,       \
                                      const std::vector<double> &,    \
                                      const std::vector<double> &,    \
                                      const double,                   \

@@ -85,6 +85,9 @@ expect_error upwind_spacing "Propagation/Level set update/Upwind/Grid spacing = 
   < <(upwind "Grid spacing = 0")
 expect_error upwind_band "Propagation/Level set update/Upwind/Band radius = 0.05 is narrower than Propagation/Maximum advance = 0.1" \
   < <(upwind "Band radius = 0.05")
+# The simplex update: its band too.
+expect_error simplex_band "Propagation/Level set update/Simplex/Band radius = 0.05 is narrower than Propagation/Maximum advance = 0.1" \
+  < <(upwind "Band radius = 0.05" | sed 's/upwind/simplex/; s/Upwind/Simplex/')
 expect_error growth_forman "Model name = forman needs the fracture toughness: set Material/Fracture toughness" \
   < <(growth 0.1 0 forman)
 expect_error growth_failure_check "'fracture toughness' needs Material/Fracture toughness" \

@@ -8,12 +8,16 @@
 # close and slip against friction at the minimum of each step; and
 # tests/cli/growth_crack_mesh_2d.prm, whose level-set update keeps the
 # crack surface as state of its own; tests/cli/growth_upwind_2d.prm, the
-# same with the upwind update.)
+# same with the upwind update, and with the simplex update by a
+# MODEL override.)
 #
-#   resume.sh XCRACK_EXECUTABLE SCENE.prm
+#   resume.sh XCRACK_EXECUTABLE SCENE.prm [MODEL]
+#
+# MODEL, if given, replaces the scene's level-set update model.
 set -u
 xcrack="$1"
 scene="$2"
+model="${3:-}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -71,6 +75,11 @@ for ranks in 1 2; do
   [ "$ranks" -gt 1 ] && launch=(mpirun -np "$ranks" "$xcrack")
   sed 's#^set Output directory.*#set Output directory = whole#' "$scene" > whole.prm
   sed 's#^set Output directory.*#set Output directory = killed#' "$scene" > killed.prm
+  if [ -n "$model" ]; then
+    for f in whole.prm killed.prm; do
+      printf 'subsection Propagation\n  subsection Level set update\n    set Model name = %s\n  end\nend\n' "$model" >> "$f"
+    done
+  fi
   rm -rf whole killed
   "${launch[@]}" whole.prm > whole.log 2>&1 || fail "$ranks rank(s): the whole run failed"
 

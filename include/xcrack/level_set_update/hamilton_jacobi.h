@@ -4,6 +4,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <xcrack/level_set_update/band_grid.h>
+#include <xcrack/level_set_update/simplex_band.h>
 
 #include <vector>
 
@@ -84,11 +85,12 @@ namespace xcrack
        *    reinitialised;
        *
        * each steady-state phase over the pseudo-time that crosses
-       * @p width.
+       * @p width. @p Band is a BandGrid (finite differences) or a
+       * SimplexBand (the simplex scheme): the phases are the same.
        */
-      template <int dim>
+      template <class Band>
       Iterations
-      move_front(const BandGrid<dim>       &grid,
+      move_front(const Band                &grid,
                  const std::vector<double> &kink,
                  const std::vector<double> &advance,
                  const double               width,
@@ -100,6 +102,53 @@ namespace xcrack
       template <int dim>
       Tensor<1, dim>
       gradient(const BandGrid<dim>       &grid,
+               const std::vector<double> &phi,
+               const std::size_t          i);
+
+
+
+      /**
+       * The same phases on a SimplexBand, by the simplex scheme (Barth and
+       * Sethian 1998; Code_Aster's SIMPLEXE): phi is P1 on each simplex, so
+       * its gradient is constant there; H is linearised about it (V =
+       * dH/d(grad phi)), the simplex's residual goes to its downstream
+       * nodes (those V points to) by the N scheme of residual
+       * distribution, and each node moves by the volume-weighted mean of
+       * what it receives. A node no simplex sends anything to (upstream of
+       * all of them, or at the band's edge) keeps its value: first-order,
+       * monotone upwinding without a lattice. Same
+       * arguments and results as the BandGrid versions, except that the
+       * steady-state phases run a fixed number of iterations (the
+       * pseudo-time that crosses @p width): they seldom meet a tolerance
+       * (a node where characteristics meet, as at a kink, keeps moving by
+       * a little), and a stopping test would make the result jump with
+       * the round-off of its input (one iteration more on one rank than
+       * on two).
+       */
+      template <int dim>
+      void
+      propagate(const SimplexBand<dim>    &band,
+                const std::vector<double> &speed,
+                std::vector<double>       &phi);
+
+      template <int dim>
+      unsigned int
+      reinitialise(const SimplexBand<dim> &band,
+                   std::vector<double>    &phi,
+                   const double            width);
+
+      template <int dim>
+      unsigned int
+      orthogonalise(const SimplexBand<dim>    &band,
+                    const std::vector<double> &phi,
+                    std::vector<double>       &psi,
+                    const double               width);
+
+      /// The gradient of @p phi at node @p i: the mean of its simplices'
+      /// (constant) gradients, weighted by their volumes.
+      template <int dim>
+      Tensor<1, dim>
+      gradient(const SimplexBand<dim>    &band,
                const std::vector<double> &phi,
                const std::size_t          i);
     } // namespace HamiltonJacobi
