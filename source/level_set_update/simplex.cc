@@ -91,8 +91,13 @@ namespace xcrack
 
       write_back<dim>(
         [&](const Point<dim> &x, double &n, double &t) {
+          // A node at the band's edge lacks the simplices beyond it (on a
+          // graded mesh a coarse cell across the edge takes its
+          // neighbours' too): its lst would keep its old value where the
+          // far rule lowers it, a spurious front. It gets the far rule.
           const std::size_t i = band.find(x);
-          if (i == SimplexBand<dim>::none || !band.is_active(i))
+          if (i == SimplexBand<dim>::none || !band.is_active(i) ||
+              band.is_edge(i) || band.simplices_of(i).empty())
             return false;
           n = phi[i];
           t = psi[i];
