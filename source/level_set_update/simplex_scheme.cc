@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace xcrack
 {
@@ -254,26 +255,68 @@ namespace xcrack
         if (band.n_simplices() == 0)
           return 0;
         const double h = band.min_height();
-        // The velocity S(phi) n per simplex, fixed during the iterations.
-        std::vector<Tensor<1, dim>> velocity(band.n_simplices());
-        for (std::size_t s = 0; s < band.n_simplices(); ++s)
+        // Each node's velocity V = S(phi) n (n from the node's gradient of
+        // phi) and the simplex of its star that holds the backward ray -V:
+        // there V . grad lambda_j <= 0 for the other nodes j, and V . grad
+        // psi = sum_j (V . grad lambda_j) (psi_j - psi_i) has non-negative
+        // weights after the minus of the update (monotone) and is exact
+        // for a linear psi. At the body's surface no simplex may hold the
+        // ray: the least bad one serves, its downstream nodes left out (as
+        // Godunov's rule leaves out a missing neighbour). The weights are
+        // fixed: psi is carried along the lines of phi's gradient (a
+        // Barth-Sethian distribution of each simplex's residual to its
+        // downstream nodes left lst uneven ahead of a kinked front: dips of
+        // a cell along the new direction after a few steps).
+        std::vector<std::vector<std::pair<unsigned int, double>>> upstream(
+          band.size());
+        for (std::size_t i = 0; i < band.size(); ++i)
           {
-            const Tensor<1, dim> g = simplex_gradient(band, phi, s);
-            const double         p = simplex_mean(band, phi, s);
-            if (g.norm() > 0)
-              velocity[s] = p / std::sqrt(p * p + h * h) / g.norm() * g;
+            if (!band.is_active(i))
+              continue;
+            const Tensor<1, dim> g = gradient(band, phi, i);
+            if (g.norm() == 0)
+              continue;
+            const Tensor<1, dim> V =
+              phi[i] / std::sqrt(phi[i] * phi[i] + h * h) / g.norm() * g;
+            unsigned int chosen = static_cast<unsigned int>(-1);
+            double       best   = std::numeric_limits<double>::max();
+            for (const unsigned int s : band.simplices_of(i))
+              {
+                double worst = -std::numeric_limits<double>::max();
+                for (unsigned int j = 0; j <= dim; ++j)
+                  if (band.nodes(s)[j] != i)
+                    worst = std::max(worst,
+                                     V * band.gradients(s)[j] /
+                                       band.gradients(s)[j].norm());
+                if (worst < best)
+                  {
+                    best   = worst;
+                    chosen = s;
+                  }
+              }
+            if (chosen == static_cast<unsigned int>(-1))
+              continue;
+            for (unsigned int j = 0; j <= dim; ++j)
+              {
+                const double k = V * band.gradients(chosen)[j];
+                if (band.nodes(chosen)[j] != i && k < 0)
+                  upstream[i].emplace_back(band.nodes(chosen)[j], k);
+              }
           }
-        // H = V . grad psi.
-        const auto flux = [&](const std::size_t s, const Tensor<1, dim> &g) {
-          (void)g;
-          return std::make_pair(velocity[s], 0.);
-        };
-        const std::vector<char> fixed(band.size(), 0);
-        const double            dt         = 0.5 * h;
-        const unsigned int      iterations = max_iterations(band, width, dt);
+        const double        dt         = 0.5 * h;
+        const unsigned int  iterations = max_iterations(band, width, dt);
+        std::vector<double> next(band.size());
         for (unsigned int k = 0; k < iterations; ++k)
-          // (Below 0.7 the kinked step's lst oscillates.)
-          step(band, flux, dt, 1., fixed, psi);
+          {
+            for (std::size_t i = 0; i < band.size(); ++i)
+              {
+                double rate = 0;
+                for (const auto &[j, c] : upstream[i])
+                  rate += c * (psi[j] - psi[i]);
+                next[i] = psi[i] - dt * rate;
+              }
+            psi.swap(next);
+          }
         return iterations;
       }
 

@@ -110,13 +110,17 @@ namespace xcrack
       /**
        * The same phases on a SimplexBand, by the simplex scheme (Barth and
        * Sethian 1998; Code_Aster's SIMPLEXE): phi is P1 on each simplex, so
-       * its gradient is constant there; H is linearised about it (V =
-       * dH/d(grad phi)), the simplex's residual goes to its downstream
-       * nodes (those V points to) by the N scheme of residual
-       * distribution, and each node moves by the volume-weighted mean of
-       * what it receives. A node no simplex sends anything to (upstream of
-       * all of them, or at the band's edge) keeps its value: first-order,
-       * monotone upwinding without a lattice. Same
+       * its gradient is constant there, and H is linearised about it (V =
+       * dH/d(grad phi)). propagate() and reinitialise() send each
+       * simplex's residual to its downstream nodes (those V points to);
+       * a node takes it from the simplices of which it is the only
+       * downstream node where it has any (monotone), else the weighted mean
+       * over the others. orthogonalise(), whose V is known beforehand,
+       * updates each node from the simplex of its star that holds its
+       * backward characteristic (monotone and exact for a linear psi). A
+       * node that receives nothing (upstream of all its simplices, or at
+       * the band's edge) keeps its value: first-order upwinding without a
+       * lattice. Same
        * arguments and results as the BandGrid versions, except that the
        * steady-state phases run a fixed number of iterations (the
        * pseudo-time that crosses @p width): they seldom meet a tolerance
