@@ -4,7 +4,7 @@ cells: markdown tables for doc/verification/level-set-update.md.
 
     contrib/build.sh release
     /usr/bin/python3 contrib/study_level_set_accuracy.py [--jobs 2]
-        [--methods geometric,crack mesh,upwind] [--fractions 0.1,0.5,1,2,5]
+        [--methods geometric,crack mesh,upwind,simplex] [--fractions 0.1,0.5,1,2,5]
 
 Three scenes, each run per method and per advance a = f h (h the edge of
 the cells at the front):
@@ -194,7 +194,7 @@ def main():
         description=__doc__,
         formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--jobs", type=int, default=1)
-    parser.add_argument("--methods", default="geometric,crack mesh,upwind")
+    parser.add_argument("--methods", default="geometric,crack mesh,upwind,simplex")
     parser.add_argument("--fractions", default="0.1,0.5,1,2,5")
     parser.add_argument("--scenes", default="kink,straight,penny")
     args = parser.parse_args()
