@@ -115,9 +115,11 @@ namespace xcrack
     XCRACK_REGISTER_PLUGIN(Interface,
                            Simplex,
                            "simplex",
-                           "The Hamilton-Jacobi phases of `upwind` on the "
+                           "the Hamilton-Jacobi phases of `upwind` on the "
                            "mesh's cells near the front split into "
                            "simplices, by the simplex scheme: no auxiliary "
-                           "grid (subsection Simplex).")
+                           "grid; it costs more than `upwind` and fails on "
+                           "kinked paths (doc/verification/"
+                           "level-set-update.md) (subsection Simplex).")
   } // namespace LevelSetUpdate
 } // namespace xcrack
