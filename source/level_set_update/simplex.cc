@@ -90,7 +90,7 @@ namespace xcrack
                         << n.reinitialise_psi << std::endl;
 
       write_back<dim>(
-        [&](const Point<dim> &x, double &n, double &t) {
+        [&](const Point<dim> &x, double &normal, double &tangent) {
           // A node at the band's edge lacks the simplices beyond it (on a
           // graded mesh a coarse cell across the edge takes its
           // neighbours' too): its lst would keep its old value where the
@@ -99,8 +99,8 @@ namespace xcrack
           if (i == SimplexBand<dim>::none || !band.is_active(i) ||
               band.is_edge(i) || band.simplices_of(i).empty())
             return false;
-          n = phi[i];
-          t = psi[i];
+          normal  = phi[i];
+          tangent = psi[i];
           return true;
         },
         fronts,
