@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -63,6 +64,27 @@ namespace xcrack
       if (band_radius > 0)
         return band_radius;
       return std::max(enrichment_radius, 6 * h) + 2 * largest_advance;
+    }
+
+
+
+    template <int dim>
+    double
+    finest_front_cell(const LevelSetFields<dim> &fields,
+                      const unsigned int         crack,
+                      const std::string         &method,
+                      const MPI_Comm             communicator)
+    {
+      const double h = front_cell_sizes(fields, crack, communicator).finest;
+      check_input(h < std::numeric_limits<double>::max(),
+                  "the " + method +
+                    " level-set update found no cell at the "
+                    "front of crack " +
+                    std::to_string(crack + 1) +
+                    ": its front lies outside the mesh, a path gone astray "
+                    "(for paths that turn hard: Propagation/Level set "
+                    "update/Model name = crack mesh)");
+      return h;
     }
 
 
@@ -156,22 +178,26 @@ namespace xcrack
 
 
 
-#define XCRACK_INSTANTIATE(dim)                                          \
-  template std::vector<char> extend_moves(                               \
-    const std::size_t,                                                   \
-    const std::function<Point<dim>(std::size_t)> &,                      \
-    const std::vector<double> &,                                         \
-    const std::vector<std::vector<FrontPoint<dim>>> &,                   \
-    const std::vector<Track<dim>> &,                                     \
-    const double,                                                        \
-    std::vector<double> &,                                               \
-    std::vector<double> &);                                              \
-  template void write_back(                                              \
-    const std::function<bool(const Point<dim> &, double &, double &)> &, \
-    const std::vector<std::vector<FrontPoint<dim>>> &,                   \
-    const double,                                                        \
-    const double,                                                        \
-    const unsigned int,                                                  \
+#define XCRACK_INSTANTIATE(dim)                                             \
+  template double            finest_front_cell(const LevelSetFields<dim> &, \
+                                               const unsigned int,          \
+                                               const std::string &,         \
+                                               const MPI_Comm);             \
+  template std::vector<char> extend_moves(                                  \
+    const std::size_t,                                                      \
+    const std::function<Point<dim>(std::size_t)> &,                         \
+    const std::vector<double> &,                                            \
+    const std::vector<std::vector<FrontPoint<dim>>> &,                      \
+    const std::vector<Track<dim>> &,                                        \
+    const double,                                                           \
+    std::vector<double> &,                                                  \
+    std::vector<double> &);                                                 \
+  template void write_back(                                                 \
+    const std::function<bool(const Point<dim> &, double &, double &)> &,    \
+    const std::vector<std::vector<FrontPoint<dim>>> &,                      \
+    const double,                                                           \
+    const double,                                                           \
+    const unsigned int,                                                     \
     LevelSetFields<dim> &);
     XCRACK_INSTANTIATE(2)
     XCRACK_INSTANTIATE(3)

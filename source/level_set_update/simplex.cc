@@ -54,12 +54,8 @@ namespace xcrack
       if (largest == 0)
         return;
       const MPI_Comm comm = this->get_mpi_communicator();
-      const double   h    = front_cell_sizes(fields, crack, comm).finest;
-      AssertThrow(h < std::numeric_limits<double>::max(),
-                  ExcMessage("The simplex level-set update found no cell at "
-                             "the front of crack " +
-                             std::to_string(crack + 1) + "."));
-      const double radius =
+      const double   h    = finest_front_cell(fields, crack, "simplex", comm);
+      const double   radius =
         narrow_band.radius(this->get_enrichment() ?
                              this->get_enrichment()->get_parameters().radius :
                              0.,

@@ -105,11 +105,7 @@ namespace xcrack
       const MPI_Comm comm = this->get_mpi_communicator();
       // The cells that resolve the front set the grid and the band (the
       // largest cells that reach it are coarse ones on a graded mesh).
-      const double h = front_cell_sizes(fields, crack, comm).finest;
-      AssertThrow(h < std::numeric_limits<double>::max(),
-                  ExcMessage("The upwind level-set update found no cell at "
-                             "the front of crack " +
-                             std::to_string(crack + 1) + "."));
+      const double h  = finest_front_cell(fields, crack, "upwind", comm);
       const double dx = spacing * h / std::sqrt(dim);
       const double radius =
         narrow_band.radius(this->get_enrichment() ?

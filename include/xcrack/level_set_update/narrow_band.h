@@ -61,6 +61,22 @@ namespace xcrack
 
 
     /**
+     * The diameter of the finest cells at the front of crack @p crack
+     * (front_cell_sizes()): the scale of the band and of its scheme.
+     * Collective. Where no cell is at the front (a path gone astray left
+     * its front outside the mesh), an InputError naming @p method: once
+     * results are written, the run ends there with a clear message.
+     */
+    template <int dim>
+    double
+    finest_front_cell(const LevelSetFields<dim> &fields,
+                      const unsigned int         crack,
+                      const std::string         &method,
+                      const MPI_Comm             communicator);
+
+
+
+    /**
      * The velocities extended from the front: of the @p n points (point @p i
      * at @p point_of(i), lsn @p phi[i], NaN outside the body), those within
      * @p reach of the old fronts @p fronts take part (the returned mask);
