@@ -85,7 +85,9 @@ for ranks in 1 2; do
 
   "${launch[@]}" killed.prm > killed.log 2>&1 &
   run=$!
-  for _ in $(seq 1 6000); do [ -d killed/checkpoint ] && break; sleep 0.01; done
+  # (Up to three minutes: a Debug run beside other tests on two cores
+  # took more than one to write its first checkpoint.)
+  for _ in $(seq 1 18000); do [ -d killed/checkpoint ] && break; sleep 0.01; done
   sleep "0.$((RANDOM % 10))"
   pkill -9 -f "xcrack killed.prm"
   wait "$run" 2> /dev/null
