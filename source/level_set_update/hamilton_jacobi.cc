@@ -60,19 +60,17 @@ namespace xcrack
 
 
 
-        /// The largest number of iterations of a steady-state phase: the
-        /// pseudo-time that crosses @p width, with a margin.
-        template <int dim>
-        unsigned int
-        max_iterations(const BandGrid<dim> &grid,
-                       const double         width,
-                       const double         dt)
-        {
-          return static_cast<unsigned int>(
-                   std::ceil(1.5 * width / dt + 2 * grid.min_spacing() / dt)) +
-                 10;
-        }
       } // namespace
+
+
+
+      unsigned int
+      steady_iterations(const double width, const double dt, const double h)
+      {
+        return static_cast<unsigned int>(
+                 std::ceil(1.5 * width / dt + 2 * h / dt)) +
+               10;
+      }
 
 
 
@@ -176,8 +174,9 @@ namespace xcrack
               free.push_back(p);
           }
 
-        const double        dt         = 0.5 * dx;
-        const unsigned int  iterations = max_iterations(grid, width, dt);
+        const double       dt = 0.5 * dx;
+        const unsigned int iterations =
+          steady_iterations(width, dt, grid.min_spacing());
         std::vector<double> next(free.size());
         unsigned int        k = 0;
         for (; k < iterations; ++k)
@@ -227,8 +226,9 @@ namespace xcrack
                                g / g.norm());
           }
 
-        const double        dt         = 0.5 * dx;
-        const unsigned int  iterations = max_iterations(grid, width, dt);
+        const double       dt = 0.5 * dx;
+        const unsigned int iterations =
+          steady_iterations(width, dt, grid.min_spacing());
         std::vector<double> next(moving.size());
         unsigned int        k = 0;
         for (; k < iterations; ++k)

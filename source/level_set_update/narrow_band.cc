@@ -56,14 +56,17 @@ namespace xcrack
 
 
 
+    template <int dim>
     double
-    NarrowBand::radius(const double enrichment_radius,
-                       const double h,
-                       const double largest_advance) const
+    NarrowBand::radius(const Enrichment<dim> *enrichment,
+                       const double           h,
+                       const double           largest_advance) const
     {
       if (band_radius > 0)
         return band_radius;
-      return std::max(enrichment_radius, 6 * h) + 2 * largest_advance;
+      const double enriched =
+        (enrichment ? enrichment->get_parameters().radius : 0.);
+      return std::max(enriched, 6 * h) + 2 * largest_advance;
     }
 
 
@@ -179,6 +182,9 @@ namespace xcrack
 
 
 #define XCRACK_INSTANTIATE(dim)                                             \
+  template double            NarrowBand::radius(const Enrichment<dim> *,    \
+                                     const double,               \
+                                     const double) const;        \
   template double            finest_front_cell(const LevelSetFields<dim> &, \
                                                const unsigned int,          \
                                                const std::string &,         \

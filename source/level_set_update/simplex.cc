@@ -56,11 +56,7 @@ namespace xcrack
       const MPI_Comm comm = this->get_mpi_communicator();
       const double   h    = finest_front_cell(fields, crack, "simplex", comm);
       const double   radius =
-        narrow_band.radius(this->get_enrichment() ?
-                             this->get_enrichment()->get_parameters().radius :
-                             0.,
-                           h,
-                           largest);
+        narrow_band.radius(this->get_enrichment(), h, largest);
       // The band reaches a cell beyond the nodes that get new values, so
       // that those have their simplices on every side.
       const double reach = radius + largest + h;

@@ -266,15 +266,6 @@ namespace xcrack
 
     template <int dim>
     std::size_t
-    SimplexBand<dim>::n_active() const
-    {
-      return std::count(active.begin(), active.end(), 1);
-    }
-
-
-
-    template <int dim>
-    std::size_t
     SimplexBand<dim>::n_simplices() const
     {
       return active_simplices.size();

@@ -128,18 +128,6 @@ namespace xcrack
 
 
 
-        /// The largest number of iterations of a steady-state phase: the
-        /// pseudo-time that crosses @p width, with a margin.
-        template <int dim>
-        unsigned int
-        max_iterations(const SimplexBand<dim> &band,
-                       const double            width,
-                       const double            dt)
-        {
-          return static_cast<unsigned int>(
-                   std::ceil(1.5 * width / dt + 2 * band.min_height() / dt)) +
-                 10;
-        }
       } // namespace
 
 
@@ -235,7 +223,7 @@ namespace xcrack
                                 S);
         };
         const double       dt         = 0.5 * h;
-        const unsigned int iterations = max_iterations(band, width, dt);
+        const unsigned int iterations = steady_iterations(width, dt, h);
         for (unsigned int k = 0; k < iterations; ++k)
           // (A floor of 1 slows the reinitialisation of a distorted circle
           // past its iteration budget; 0.5 keeps the kinked step stable.)
@@ -304,7 +292,7 @@ namespace xcrack
               }
           }
         const double        dt         = 0.5 * h;
-        const unsigned int  iterations = max_iterations(band, width, dt);
+        const unsigned int  iterations = steady_iterations(width, dt, h);
         std::vector<double> next(band.size());
         for (unsigned int k = 0; k < iterations; ++k)
           {

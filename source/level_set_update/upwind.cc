@@ -108,11 +108,7 @@ namespace xcrack
       const double h  = finest_front_cell(fields, crack, "upwind", comm);
       const double dx = spacing * h / std::sqrt(dim);
       const double radius =
-        narrow_band.radius(this->get_enrichment() ?
-                             this->get_enrichment()->get_parameters().radius :
-                             0.,
-                           h,
-                           largest);
+        narrow_band.radius(this->get_enrichment(), h, largest);
       // The grid reaches a little beyond the band, so that the grid cells of
       // the mesh nodes in the band have all their corners.
       const double reach = radius + largest + 2 * dx;

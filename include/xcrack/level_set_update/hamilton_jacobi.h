@@ -64,6 +64,12 @@ namespace xcrack
                     const double               width,
                     const double               tolerance = 1e-4);
 
+      /// The largest number of iterations of a steady-state phase: the
+      /// pseudo-time that crosses @p width in steps of @p dt, with a margin
+      /// of two cells of size @p h.
+      unsigned int
+      steady_iterations(const double width, const double dt, const double h);
+
       /// The iterations the steady-state phases of move_front() took.
       struct Iterations
       {

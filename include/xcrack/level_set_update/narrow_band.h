@@ -7,6 +7,7 @@
 #include <xcrack/crack/crack_geometry.h>
 #include <xcrack/crack/level_set_fields.h>
 #include <xcrack/level_set_update/front_track.h>
+#include <xcrack/xfem/enrichment.h>
 
 #include <functional>
 #include <string>
@@ -42,16 +43,18 @@ namespace xcrack
 
       /**
        * The band's radius around the old front: the user's, or the larger
-       * of @p enrichment_radius and six front cells of size @p h, plus
+       * of @p enrichment's radius (0 without one) and six front cells of
+       * size @p h, plus
        * twice the largest advance @p largest_advance (half the geometric
        * update's first term: the crowns and the enriched zone still lie
        * inside, and the cost goes with the band's cross-section;
        * doc/verification/level-set-update.md).
        */
+      template <int dim>
       double
-      radius(const double enrichment_radius,
-             const double h,
-             const double largest_advance) const;
+      radius(const Enrichment<dim> *enrichment,
+             const double           h,
+             const double           largest_advance) const;
 
     private:
       double      band_radius = 0;

@@ -101,9 +101,6 @@ namespace xcrack
       bool
       is_edge(const std::size_t i) const;
 
-      std::size_t
-      n_active() const;
-
       /// The number of simplices that take part.
       std::size_t
       n_simplices() const;
