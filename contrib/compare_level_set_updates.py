@@ -11,7 +11,8 @@ Propagation/Level set update: `upwind@Upwind/Grid spacing=1` runs the
 upwind update on a grid of one front-cell edge.
 
 Each shipped scene of prm/benchmarks/ (default: paris_center_2d, dcb_2d,
-paris_ellipse_3d, mixed_mode_3pb_3d, surface_crack_3d; add paris_penny_3d,
+en_passant_2d, paris_ellipse_3d, mixed_mode_3pb_3d, surface_crack_3d; add
+paris_penny_3d,
 4 minutes a method) runs once per method (`-s Propagation/Level set
 update/Model name=...`). Per run: the steps, the cycles, how it ended, the
 wall time, the time of the level-set updates (absolute and as a share of
@@ -108,7 +109,9 @@ def short(reason):
                       ("reached the surface", "front at the surface"),
                       ("Maximum crack size", "crack size"),
                       ("last step", "last step"),
-                      ("singular", "singular system")):
+                      ("singular", "singular system"),
+                      ("enriched zones meet", "cracks about to meet"),
+                      ("no cell at the front", "front outside the mesh")):
         if key in reason:
             return text
     return reason[:60]
@@ -138,7 +141,8 @@ def main():
         formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--jobs", type=int, default=1)
     parser.add_argument("--scenes", default="paris_center_2d,dcb_2d,"
-                        "paris_ellipse_3d,mixed_mode_3pb_3d,surface_crack_3d")
+                        "en_passant_2d,paris_ellipse_3d,mixed_mode_3pb_3d,"
+                        "surface_crack_3d")
     parser.add_argument("--methods", default="geometric,crack mesh")
     args = parser.parse_args()
     scenes = args.scenes.split(",")

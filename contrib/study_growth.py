@@ -223,7 +223,9 @@ def dcb(args):
         end = ("face" if "would leave the body" in reason or
                          "cuts through" in reason else
                "piece of crack" if "piece of crack" in reason else
-               "singular" if "singular" in reason else reason)
+               "singular" if "singular" in reason else
+               "front outside the mesh" if "no cell at the front" in reason else
+               reason)
         heights = [height_at(path, x) for x in (4.6, 5.0, 5.4)]
         print(f"| {kink} | {integration} | {advance} | "
               f"{11.8 / 30 / 2 ** levels:.4f} | " +

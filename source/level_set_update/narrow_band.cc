@@ -9,6 +9,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 namespace xcrack
 {
@@ -137,9 +138,43 @@ namespace xcrack
 
     template <int dim>
     void
+    straighten_ahead(const std::function<Point<dim>(std::size_t)>    &point_of,
+                     const std::vector<char>                         &mask,
+                     const std::vector<double>                       &psi,
+                     const std::vector<std::vector<FrontPoint<dim>>> &fronts,
+                     const std::vector<Track<dim>>                   &tracks,
+                     std::vector<double>                             &phi)
+    {
+      // The sign of lsn along each front's normal (as in extend_moves()),
+      // from the points behind it, then lsn ahead from the normal.
+      std::vector<double>       orientation(fronts.size(), 0.);
+      std::vector<unsigned int> front_of(phi.size(), 0);
+      std::vector<double>       ahead(phi.size(), 0.);
+      for (std::size_t i = 0; i < phi.size(); ++i)
+        {
+          if (!mask[i])
+            continue;
+          const Point<dim> x       = point_of(i);
+          const auto [front, s, p] = project(fronts, x);
+          const Sample<dim> sample = tracks[front].at(s);
+          front_of[i]              = front;
+          ahead[i]                 = (x - p) * sample.old_normal();
+          if ((x - p) * sample.old_direction() < 0)
+            orientation[front] += phi[i] * ahead[i];
+        }
+      for (std::size_t i = 0; i < phi.size(); ++i)
+        if (mask[i] && psi[i] > 0)
+          phi[i] = (orientation[front_of[i]] < 0 ? -ahead[i] : ahead[i]);
+    }
+
+
+
+    template <int dim>
+    void
     write_back(const std::function<bool(const Point<dim> &, double &, double &)>
                                                                &band_values,
                const std::vector<std::vector<FrontPoint<dim>>> &fronts,
+               const std::vector<Track<dim>>                   &tracks,
                const double                                     radius,
                const double                                     largest,
                const unsigned int                               crack,
@@ -155,25 +190,51 @@ namespace xcrack
       TrilinosWrappers::MPI::Vector new_lsn(owned, comm), new_lst(owned, comm);
       const auto                   &old_lsn = fields.lsn(crack);
       const auto                   &old_lst = fields.lst(crack);
+      // The nodes ahead of the front in the ring beyond the band, with
+      // their front and distance to its new extension plane.
+      const double           ring = 2 * radius;
+      const BoundingBox<dim> box  = front_box(fronts, ring);
+      std::vector<std::tuple<types::global_dof_index, unsigned int, double>>
+                          ahead;
+      std::vector<double> orientation(fronts.size(), 0.);
       for (const types::global_dof_index dof : owned)
         {
           const Point<dim> &x  = support.at(dof);
           const double      t0 = old_lst[dof];
+          new_lsn[dof]         = old_lsn[dof];
+          new_lst[dof]         = (t0 <= 0 ? t0 - largest : t0);
+          if (!box.point_inside(x))
+            continue;
+          const auto [front, s, p]   = project(fronts, x);
+          const double      distance = x.distance(p);
+          const Sample<dim> sample   = tracks[front].at(s);
           double            n, t;
-          // (The band's values first: a cheap test that skips the
-          // projection of the nodes far from the front.)
-          if (band_values(x, n, t) &&
-              x.distance(std::get<2>(project(fronts, x))) <= radius)
+          if (distance <= radius && band_values(x, n, t))
             {
               new_lsn[dof] = n;
               new_lst[dof] = t;
+              if ((x - p) * sample.old_direction() < 0)
+                orientation[front] +=
+                  old_lsn[dof] * ((x - p) * sample.old_normal());
             }
-          else
-            {
-              new_lsn[dof] = old_lsn[dof];
-              new_lst[dof] = (t0 <= 0 ? t0 - largest : t0);
-            }
+          else if (t0 > 0 && distance <= ring &&
+                   (x - p) * (sample.old_direction() + sample.new_direction()) >
+                     0)
+            ahead.emplace_back(dof, front, (x - p) * sample.new_normal());
         }
+      Utilities::MPI::sum(ArrayView<const double>(orientation),
+                          comm,
+                          ArrayView<double>(orientation));
+      // Beyond the band, lsn ahead of the front (ahead of the bisector of
+      // the old and new directions, as in the geometric update, and lst >
+      // 0) is the new extension plane; lst keeps its sign. Kept there, the
+      // old lsn of a crack that turned has the sign of the side it was on
+      // before: next to the band's new values behind the front, lst < 0,
+      // its sign changed between two nodes, a piece of crack on the outer
+      // side of the turn. (Beside and behind the front the plane is not
+      // the crack's side: a node there crossed it as the crack turned.)
+      for (const auto &[dof, front, n] : ahead)
+        new_lsn[dof] = (orientation[front] < 0 ? -n : n);
       new_lsn.compress(VectorOperation::insert);
       new_lst.compress(VectorOperation::insert);
       fields.set(crack, new_lsn, new_lst);
@@ -198,9 +259,17 @@ namespace xcrack
     const double,                                                           \
     std::vector<double> &,                                                  \
     std::vector<double> &);                                                 \
+  template void straighten_ahead(                                           \
+    const std::function<Point<dim>(std::size_t)> &,                         \
+    const std::vector<char> &,                                              \
+    const std::vector<double> &,                                            \
+    const std::vector<std::vector<FrontPoint<dim>>> &,                      \
+    const std::vector<Track<dim>> &,                                        \
+    std::vector<double> &);                                                 \
   template void write_back(                                                 \
     const std::function<bool(const Point<dim> &, double &, double &)> &,    \
     const std::vector<std::vector<FrontPoint<dim>>> &,                      \
+    const std::vector<Track<dim>> &,                                        \
     const double,                                                           \
     const double,                                                           \
     const unsigned int,                                                     \

@@ -65,15 +65,13 @@ namespace xcrack
         SimplexBand<dim>::gather(fields, crack, front_box(fronts, reach), comm);
       std::vector<double> phi = band.lsn(), psi = band.lst();
       std::vector<double> kink, advance;
-      band.set_active(extend_moves<dim>(
-        band.size(),
-        [&band](const std::size_t i) { return band.point(i); },
-        phi,
-        fronts,
-        tracks,
-        reach,
-        kink,
-        advance));
+      const auto          point_of = [&band](const std::size_t i) {
+        return band.point(i);
+      };
+      const std::vector<char> active = extend_moves<dim>(
+        band.size(), point_of, phi, fronts, tracks, reach, kink, advance);
+      band.set_active(active);
+      straighten_ahead<dim>(point_of, active, psi, fronts, tracks, phi);
       const HamiltonJacobi::Iterations n =
         HamiltonJacobi::move_front(band, kink, advance, reach, phi, psi);
       this->get_pcout() << "   Simplex update of crack " << crack + 1 << ": "
@@ -96,6 +94,7 @@ namespace xcrack
           return true;
         },
         fronts,
+        tracks,
         radius + largest,
         largest,
         crack,

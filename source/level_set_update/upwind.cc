@@ -135,15 +135,13 @@ namespace xcrack
 
       // The band, with the velocities extended from the front.
       std::vector<double> kink, advance;
-      grid.set_active(extend_moves<dim>(
-        grid.size(),
-        [&grid](const std::size_t i) { return grid.point(i); },
-        phi,
-        fronts,
-        tracks,
-        reach,
-        kink,
-        advance));
+      const auto          point_of = [&grid](const std::size_t i) {
+        return grid.point(i);
+      };
+      const std::vector<char> active = extend_moves<dim>(
+        grid.size(), point_of, phi, fronts, tracks, reach, kink, advance);
+      grid.set_active(active);
+      straighten_ahead<dim>(point_of, active, psi, fronts, tracks, phi);
       const HamiltonJacobi::Iterations n =
         HamiltonJacobi::move_front(grid, kink, advance, reach, phi, psi);
       this->get_pcout() << "   Upwind update of crack " << crack + 1 << ": "
@@ -164,6 +162,7 @@ namespace xcrack
           return !weights.empty();
         },
         fronts,
+        tracks,
         radius + largest,
         largest,
         crack,

@@ -99,17 +99,41 @@ namespace xcrack
                  std::vector<double>                             &advance);
 
     /**
+     * Make lsn @p phi ahead of the old fronts @p fronts (lst @p psi > 0, at
+     * the points of @p mask, point @p i at @p point_of(i)) the signed
+     * distance to the front's extension: the plane through the point's
+     * projection on the front spanned by the front and its direction.
+     * There lsn only extends the crack, and the Hamilton-Jacobi phases keep
+     * its shape (they turn it about the front); a bend left where an
+     * earlier step's band met the values kept beyond it would reach the
+     * front some steps later (band radius over advance) and bend the
+     * crack's frame there: spurious K_II, a zigzag path, pieces of crack.
+     * The crack itself (lsn = 0, lst <= 0) does not move.
+     */
+    template <int dim>
+    void
+    straighten_ahead(const std::function<Point<dim>(std::size_t)>    &point_of,
+                     const std::vector<char>                         &mask,
+                     const std::vector<double>                       &psi,
+                     const std::vector<std::vector<FrontPoint<dim>>> &fronts,
+                     const std::vector<Track<dim>>                   &tracks,
+                     std::vector<double>                             &phi);
+
+    /**
      * Give crack @p crack of @p fields new level sets: at the mesh nodes
      * within @p radius of the old fronts @p fronts, what @p band_values
      * gives at the node's position (it returns false where it has none);
      * at the others the geometric update's far rule (lsn kept, lst behind
-     * the front lowered by the largest advance @p largest, ahead kept).
+     * the front lowered by the largest advance @p largest, ahead kept),
+     * except that lsn ahead of the front (lst > 0) within twice @p radius
+     * is the distance to the new extension plane (the moves' @p tracks).
      */
     template <int dim>
     void
     write_back(const std::function<bool(const Point<dim> &, double &, double &)>
                                                                &band_values,
                const std::vector<std::vector<FrontPoint<dim>>> &fronts,
+               const std::vector<Track<dim>>                   &tracks,
                const double                                     radius,
                const double                                     largest,
                const unsigned int                               crack,
