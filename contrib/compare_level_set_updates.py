@@ -12,9 +12,8 @@ upwind update on a grid of one front-cell edge.
 
 Each shipped scene of prm/benchmarks/ (default: paris_center_2d, dcb_2d,
 en_passant_2d, paris_ellipse_3d, mixed_mode_3pb_3d, surface_crack_3d; add
-paris_penny_3d,
-4 minutes a method) runs once per method (`-s Propagation/Level set
-update/Model name=...`). Per run: the steps, the cycles, how it ended, the
+paris_penny_3d, 4 minutes a method) runs once per method (`-s
+Propagation/Level set update/Model name=...`). Per run: the steps, the cycles, how it ended, the
 wall time, the time of the level-set updates (absolute and as a share of
 the wall time), and the distance of its last front to the first method's
 front of the same step (the largest over its points of the distance to the

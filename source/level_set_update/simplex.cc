@@ -109,8 +109,8 @@ namespace xcrack
                            "the Hamilton-Jacobi phases of `upwind` on the "
                            "mesh's cells near the front split into "
                            "simplices, by the simplex scheme: no auxiliary "
-                           "grid; it costs more than `upwind` and fails on "
-                           "kinked paths (doc/verification/"
+                           "grid; it costs more than `upwind` and loses "
+                           "some hard turns (doc/verification/"
                            "level-set-update.md) (subsection Simplex).")
   } // namespace LevelSetUpdate
 } // namespace xcrack
