@@ -98,11 +98,16 @@ namespace xcrack
         Tensor<1, dim>          d, e1, e2;
         Sample<dim>             sample;
       };
-      // The box of the old fronts, widened by the band: nodes outside are
-      // not projected.
-      const BoundingBox<dim> box = front_box(fronts, radius + largest);
+      // The box of the old fronts, widened by the ring beyond the band:
+      // nodes outside are not projected.
+      const double           ring = 2 * (radius + largest);
+      const BoundingBox<dim> box  = front_box(fronts, ring);
 
       std::vector<Node> band_nodes;
+      // The nodes ahead of the front in the ring, with their front and
+      // distance to its new extension plane (see below).
+      std::vector<std::tuple<types::global_dof_index, unsigned int, double>>
+        ahead;
       for (const types::global_dof_index dof : owned)
         {
           const Point<dim> &x  = support.at(dof);
@@ -114,6 +119,16 @@ namespace xcrack
                       std::make_tuple(0u, 0., Point<dim>()));
           if (!in_box || x.distance(p) > radius + largest)
             {
+              if (in_box && t0 > 0 && x.distance(p) <= ring)
+                {
+                  const Sample<dim> sample = tracks[front].at(s);
+                  if ((x - p) *
+                        (sample.old_direction() + sample.new_direction()) >
+                      0)
+                    ahead.emplace_back(dof,
+                                       front,
+                                       (x - p) * sample.new_normal());
+                }
               // Far from the front only the signs matter, and the front
               // cannot have passed a node farther than the advance: behind
               // stays behind, ahead (or aside, where the crack turned away)
@@ -180,6 +195,12 @@ namespace xcrack
           if (node.d * (node.e1 + e1) > 0 || old_lst[node.dof] > 0)
             new_lsn[node.dof] = sign * (c * n - s * t);
         }
+      // Beyond the band, lsn ahead of the front is the new extension plane
+      // too (NarrowBand's write_back() does the same for `upwind` and
+      // `simplex`): kept, the old lsn of a crack that turned keeps the sign
+      // of the side it was on before, next to the band's new values.
+      for (const auto &[dof, front, n] : ahead)
+        new_lsn[dof] = (orientation[front] < 0 ? -n : n);
       new_lsn.compress(VectorOperation::insert);
       new_lst.compress(VectorOperation::insert);
       fields.set(crack, new_lsn, new_lst);
