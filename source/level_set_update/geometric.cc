@@ -29,7 +29,8 @@ namespace xcrack
         "0",
         Patterns::Double(0),
         "The nodes within this distance of the front get new level sets; "
-        "farther ones keep lsn and shift lst by the largest advance. 0: "
+        "farther ones keep lsn (ahead of the front, within twice the band, "
+        "the new extension plane) and the sign of lst. 0: "
         "twice the larger of the enrichment radius and six diameters of "
         "the cells at the front, plus twice the largest advance.");
       prm.leave_subsection();
