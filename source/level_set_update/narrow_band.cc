@@ -25,10 +25,10 @@ namespace xcrack
         "The update covers the points of the body within this distance of "
         "the front (plus the advance); mesh nodes farther away keep lsn "
         "(ahead of the front, within twice the band, the new extension "
-        "plane), and lst keeps its sign. 0: the larger of the enrichment radius and "
-        "six diameters of the finest front cells, plus twice the largest "
-        "advance (half the geometric update's first term: the cost goes "
-        "with the band's cross-section). At least Propagation/Maximum "
+        "plane), and lst keeps its sign. 0: the larger of the enrichment "
+        "radius and six diameters of the finest front cells, plus twice the "
+        "largest advance (half the geometric update's first term: the cost "
+        "goes with the band's cross-section). At least Propagation/Maximum "
         "advance.");
     }
 
