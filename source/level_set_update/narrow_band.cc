@@ -103,11 +103,13 @@ namespace xcrack
                  const std::vector<Track<dim>>                   &tracks,
                  const double                                     reach,
                  std::vector<double>                             &kink,
-                 std::vector<double>                             &advance)
+                 std::vector<double>                             &advance,
+                 std::vector<double>                             &plane)
     {
       std::vector<char> active(n, 0);
       kink.assign(n, 0.);
       advance.assign(n, 0.);
+      plane.assign(n, 0.);
       std::vector<unsigned int> front_of(n, 0);
       // Which way lsn counts along e2 at each front (e2 of the frame of K
       // need not point to the lsn > 0 side): behind a front lsn = +-(d .
@@ -126,46 +128,30 @@ namespace xcrack
           kink[i]                  = sample.angle;
           advance[i]               = sample.advance;
           front_of[i]              = front;
+          plane[i]                 = (x - p) * sample.old_normal();
           if ((x - p) * sample.old_direction() < 0)
-            orientation[front] += phi[i] * ((x - p) * sample.old_normal());
+            orientation[front] += phi[i] * plane[i];
         }
       for (std::size_t i = 0; i < n; ++i)
         if (active[i] && orientation[front_of[i]] < 0)
-          kink[i] = -kink[i];
+          {
+            kink[i]  = -kink[i];
+            plane[i] = -plane[i];
+          }
       return active;
     }
 
 
 
-    template <int dim>
     void
-    straighten_ahead(const std::function<Point<dim>(std::size_t)>    &point_of,
-                     const std::vector<char>                         &mask,
-                     const std::vector<double>                       &psi,
-                     const std::vector<std::vector<FrontPoint<dim>>> &fronts,
-                     const std::vector<Track<dim>>                   &tracks,
-                     std::vector<double>                             &phi)
+    straighten_ahead(const std::vector<char>   &mask,
+                     const std::vector<double> &psi,
+                     const std::vector<double> &plane,
+                     std::vector<double>       &phi)
     {
-      // The sign of lsn along each front's normal (as in extend_moves()),
-      // from the points behind it, then lsn ahead from the normal.
-      std::vector<double>       orientation(fronts.size(), 0.);
-      std::vector<unsigned int> front_of(phi.size(), 0);
-      std::vector<double>       ahead(phi.size(), 0.);
-      for (std::size_t i = 0; i < phi.size(); ++i)
-        {
-          if (!mask[i])
-            continue;
-          const Point<dim> x       = point_of(i);
-          const auto [front, s, p] = project(fronts, x);
-          const Sample<dim> sample = tracks[front].at(s);
-          front_of[i]              = front;
-          ahead[i]                 = (x - p) * sample.old_normal();
-          if ((x - p) * sample.old_direction() < 0)
-            orientation[front] += phi[i] * ahead[i];
-        }
       for (std::size_t i = 0; i < phi.size(); ++i)
         if (mask[i] && psi[i] > 0)
-          phi[i] = (orientation[front_of[i]] < 0 ? -ahead[i] : ahead[i]);
+          phi[i] = plane[i];
     }
 
 
@@ -259,13 +245,7 @@ namespace xcrack
     const std::vector<Track<dim>> &,                                        \
     const double,                                                           \
     std::vector<double> &,                                                  \
-    std::vector<double> &);                                                 \
-  template void straighten_ahead(                                           \
-    const std::function<Point<dim>(std::size_t)> &,                         \
-    const std::vector<char> &,                                              \
-    const std::vector<double> &,                                            \
-    const std::vector<std::vector<FrontPoint<dim>>> &,                      \
-    const std::vector<Track<dim>> &,                                        \
+    std::vector<double> &,                                                  \
     std::vector<double> &);                                                 \
   template void write_back(                                                 \
     const std::function<bool(const Point<dim> &, double &, double &)> &,    \

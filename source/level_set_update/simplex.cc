@@ -64,14 +64,21 @@ namespace xcrack
       SimplexBand<dim> band =
         SimplexBand<dim>::gather(fields, crack, front_box(fronts, reach), comm);
       std::vector<double> phi = band.lsn(), psi = band.lst();
-      std::vector<double> kink, advance;
+      std::vector<double> kink, advance, plane;
       const auto          point_of = [&band](const std::size_t i) {
         return band.point(i);
       };
-      const std::vector<char> active = extend_moves<dim>(
-        band.size(), point_of, phi, fronts, tracks, reach, kink, advance);
+      const std::vector<char> active = extend_moves<dim>(band.size(),
+                                                         point_of,
+                                                         phi,
+                                                         fronts,
+                                                         tracks,
+                                                         reach,
+                                                         kink,
+                                                         advance,
+                                                         plane);
       band.set_active(active);
-      straighten_ahead<dim>(point_of, active, psi, fronts, tracks, phi);
+      straighten_ahead(active, psi, plane, phi);
       const HamiltonJacobi::Iterations n =
         HamiltonJacobi::move_front(band, kink, advance, reach, phi, psi);
       this->get_pcout() << "   Simplex update of crack " << crack + 1 << ": "

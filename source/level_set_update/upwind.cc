@@ -134,14 +134,21 @@ namespace xcrack
       auto [phi, psi] = grid.sample(fields, crack, comm);
 
       // The band, with the velocities extended from the front.
-      std::vector<double> kink, advance;
+      std::vector<double> kink, advance, plane;
       const auto          point_of = [&grid](const std::size_t i) {
         return grid.point(i);
       };
-      const std::vector<char> active = extend_moves<dim>(
-        grid.size(), point_of, phi, fronts, tracks, reach, kink, advance);
+      const std::vector<char> active = extend_moves<dim>(grid.size(),
+                                                         point_of,
+                                                         phi,
+                                                         fronts,
+                                                         tracks,
+                                                         reach,
+                                                         kink,
+                                                         advance,
+                                                         plane);
       grid.set_active(active);
-      straighten_ahead<dim>(point_of, active, psi, fronts, tracks, phi);
+      straighten_ahead(active, psi, plane, phi);
       const HamiltonJacobi::Iterations n =
         HamiltonJacobi::move_front(grid, kink, advance, reach, phi, psi);
       this->get_pcout() << "   Upwind update of crack " << crack + 1 << ": "

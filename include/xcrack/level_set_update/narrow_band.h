@@ -85,7 +85,9 @@ namespace xcrack
      * @p reach of the old fronts @p fronts take part (the returned mask);
      * each gets in @p kink and @p advance the kink (towards lsn > 0) and
      * the advance of its projection on the fronts, from the moves'
-     * @p tracks.
+     * @p tracks, and in @p plane its signed distance to the old front's
+     * tangent plane (through the projection, spanned by the front and its
+     * direction; counted as lsn counts).
      */
     template <int dim>
     std::vector<char>
@@ -96,28 +98,24 @@ namespace xcrack
                  const std::vector<Track<dim>>                   &tracks,
                  const double                                     reach,
                  std::vector<double>                             &kink,
-                 std::vector<double>                             &advance);
+                 std::vector<double>                             &advance,
+                 std::vector<double>                             &plane);
 
     /**
-     * Make lsn @p phi ahead of the old fronts @p fronts (lst @p psi > 0, at
-     * the points of @p mask, point @p i at @p point_of(i)) the signed
-     * distance to the front's extension: the plane through the point's
-     * projection on the front spanned by the front and its direction.
-     * There lsn only extends the crack, and the Hamilton-Jacobi phases keep
-     * its shape (they turn it about the front); a bend left where an
-     * earlier step's band met the values kept beyond it would reach the
-     * front some steps later (band radius over advance) and bend the
-     * crack's frame there: spurious K_II, a zigzag path, pieces of crack.
-     * The crack itself (lsn = 0, lst <= 0) does not move.
+     * Make lsn @p phi ahead of the old fronts (lst @p psi > 0, at the points
+     * of @p mask) the distance @p plane to the front's tangent plane
+     * (extend_moves()). There lsn only extends the crack, and the
+     * Hamilton-Jacobi phases keep its shape (they turn it about the front);
+     * a bend left where an earlier step's band met the values kept beyond
+     * it would reach the front some steps later (band radius over advance)
+     * and bend the crack's frame there: spurious K_II, a zigzag path,
+     * pieces of crack. The crack itself (lsn = 0, lst <= 0) does not move.
      */
-    template <int dim>
     void
-    straighten_ahead(const std::function<Point<dim>(std::size_t)>    &point_of,
-                     const std::vector<char>                         &mask,
-                     const std::vector<double>                       &psi,
-                     const std::vector<std::vector<FrontPoint<dim>>> &fronts,
-                     const std::vector<Track<dim>>                   &tracks,
-                     std::vector<double>                             &phi);
+    straighten_ahead(const std::vector<char>   &mask,
+                     const std::vector<double> &psi,
+                     const std::vector<double> &plane,
+                     std::vector<double>       &phi);
 
     /**
      * Give crack @p crack of @p fields new level sets: at the mesh nodes
