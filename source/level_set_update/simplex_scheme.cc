@@ -77,7 +77,8 @@ namespace xcrack
         {
           // Per node: H and weight from the simplices that hold its
           // characteristic; from the others it is downstream of; its dual cell.
-          std::vector<std::array<double, 5>> sums(band.size(), {0, 0, 0, 0, 0});
+          std::vector<std::array<double, 5>> sums(band.size(),
+                                                  {{0, 0, 0, 0, 0}});
           for (std::size_t s = 0; s < band.n_simplices(); ++s)
             {
               const Tensor<1, dim> g        = simplex_gradient(band, phi, s);
