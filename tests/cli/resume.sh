@@ -11,13 +11,15 @@
 # same with the upwind update, and with the simplex update by a
 # MODEL override.)
 #
-#   resume.sh XCRACK_EXECUTABLE SCENE.prm [MODEL]
+#   resume.sh XCRACK_EXECUTABLE SCENE.prm [MODEL [TOLERANCE]]
 #
-# MODEL, if given, replaces the scene's level-set update model.
+# MODEL, if given and not empty, replaces the scene's level-set update
+# model. TOLERANCE (default 1e-12) is the two-rank round-off allowed.
 set -u
 xcrack="$1"
 scene="$2"
 model="${3:-}"
+two_rank_tolerance="${4:-1e-12}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -99,7 +101,7 @@ for ranks in 1 2; do
   # symmetry (K_II = 1e-9 here, against K_I = 0.8) was once seen to differ
   # in its 8th digit after a resume: allow round-off of the row's scale.
   tolerance=0
-  [ "$ranks" -gt 1 ] && tolerance=1e-12
+  [ "$ranks" -gt 1 ] && tolerance="$two_rank_tolerance"
   # The record of the resumed run lists every file of the run, those the
   # killed process wrote too.
   python3 -c "import json, sys; f = lambda d: sorted(json.load(open(d + '/run.json'))['files']); sys.exit(f('whole') != f('killed'))" ||
