@@ -467,6 +467,15 @@ namespace xcrack
     expect_wide_crown(const std::vector<std::vector<FrontPoint<dim>>> &fronts);
 
     /**
+     * What the boundary faces of the body carry under @p state, for the
+     * crowns that cross them (InteractionIntegral::BoundaryFace): a
+     * Dirichlet condition, or the scaled Neumann traction and the face's
+     * X-FEM rule. The returned function refers to @p state.
+     */
+    typename InteractionIntegral<dim>::BoundaryFaceOf
+    boundary_face_of(const LoadState<dim> &state) const;
+
+    /**
      * The estimates of the error of the K's in front_values: K on a wide
      * crown (as wide as the boundary and the other tips allow, for a dual
      * problem the mesh resolves), the estimate of its error

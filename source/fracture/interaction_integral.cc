@@ -6,6 +6,7 @@
 #include <deal.II/fe/mapping_q1.h>
 
 #include <xcrack/fracture/auxiliary_fields.h>
+#include <xcrack/fracture/crown.h>
 #include <xcrack/fracture/front_curve.h>
 #include <xcrack/fracture/hanging_vertices.h>
 #include <xcrack/fracture/integral_derivatives.h>
@@ -142,6 +143,589 @@ namespace xcrack
 
 
 
+  namespace
+  {
+    /// Where a point of the crown lies relative to the front, and the
+    /// displacement gradient there: what every integrand reads.
+    template <int dim>
+    struct CrownPoint
+    {
+      /// Reference and real coordinates.
+      Point<dim> xi, x;
+      /// The foot on the front, the local coordinates in its frame, the
+      /// distance r from the front and the angle from e1 in (e1, e2).
+      typename FrontCurve<dim>::Projection projection;
+      Tensor<1, dim>                       xl;
+      double                               r, angle;
+      Tensor<2, dim>                       du;
+
+      CrownPoint(const Crown<dim>  &crown,
+                 const Point<dim>  &xi,
+                 const Point<dim>  &x,
+                 const unsigned int first,
+                 const unsigned int last)
+        : xi(xi)
+        , x(x)
+        , projection(crown.curve.project(x, first, last))
+        , xl(projection.R * (x - projection.foot))
+        , r(std::hypot(xl[0], xl[1]))
+        , angle(std::atan2(xl[1], xl[0]))
+      {}
+    };
+
+
+
+    /**
+     * The integrals b_jm = I_m(theta_j) of one front (m: the interaction
+     * integral of each mode's unit auxiliary field, then G), summed cell by
+     * cell, and with derivatives also d b_jm / dU. Each term of the
+     * identity in InteractionIntegral's documentation is a function of its
+     * own: the domain term, the body force, the divergence of the
+     * auxiliary stress (3D), the lips.
+     */
+    template <int dim>
+    class FrontIntegrals
+    {
+    public:
+      static constexpr unsigned int n_modes     = (dim == 3 ? 3 : 2);
+      static constexpr unsigned int n_integrals = n_modes + 1;
+
+      FrontIntegrals(const Material                      &material,
+                     const WilliamsField                 &unit,
+                     const Crown<dim>                    &crown,
+                     const TrilinosWrappers::MPI::Vector &solution,
+                     IntegralDerivatives<dim>            *d_b)
+        : b(crown.basis.n_test_functions() * n_integrals, 0.)
+        , material(material)
+        , unit(unit)
+        , crown(crown)
+        , solution(solution)
+        , d_b(d_b)
+        , grad_theta(crown.basis.n_test_functions())
+        , theta(crown.basis.n_test_functions())
+      {}
+
+      /// The terms over the cell's X-FEM rule @p fe_values: the domain
+      /// term, the body force @p body_force (if not null), the divergence
+      /// term (3D).
+      void
+      add_domain_terms(const FEValues<dim>  &fe_values,
+                       const CellTheta<dim> &cell_theta,
+                       const unsigned int    first,
+                       const unsigned int    last,
+                       const Function<dim>  *body_force);
+
+      /// The lip terms on the lip rule of @p cell (reference points,
+      /// weights, normals), under the pressure @p lip_pressure (may be
+      /// null) and the traction @p lip_traction (may be empty).
+      void
+      add_lip_terms(
+        const typename DoFHandler<dim>::active_cell_iterator &cell,
+        const CellTheta<dim>                                 &cell_theta,
+        const unsigned int                                    first,
+        const unsigned int                                    last,
+        const std::vector<Point<dim>>                        &points,
+        const std::vector<double>                            &weights,
+        const std::vector<Tensor<1, dim>>                    &normals,
+        const Function<dim>                                  *lip_pressure,
+        const typename InteractionIntegral<dim>::LipTraction &lip_traction);
+
+      /// The term of the boundary face @p face_no of @p cell, which the
+      /// crown crosses: see InteractionIntegral.
+      void
+      add_face_terms(
+        const typename DoFHandler<dim>::active_cell_iterator  &cell,
+        const CellTheta<dim>                                  &cell_theta,
+        const unsigned int                                     first,
+        const unsigned int                                     last,
+        const unsigned int                                     face_no,
+        const typename InteractionIntegral<dim>::BoundaryFace &face);
+
+      /// b_jm at index j * n_integrals + m (this rank's part).
+      std::vector<double> b;
+
+    private:
+      /**
+       * int T_m : grad theta_j with T_m,kj = sigma_ij u^aux_i,k +
+       * sigma^aux_ij u_i,k - sigma_il eps^aux_il delta_jk for the modes
+       * and sigma_ij u_i,k - W delta_jk for G; its derivative for du = G
+       * is G : A with A = C : sym(du_aux Theta) + sigma_aux Theta^T -
+       * tr(Theta) sigma_aux.
+       */
+      void
+      domain_term(const CrownPoint<dim> &p,
+                  const Tensor<2, dim> (&du_aux)[n_modes],
+                  const std::vector<unsigned int> &active,
+                  const double                     JxW);
+
+      /// - int f_i u^aux_i,k theta_k (modes), - int f_i u_i,k theta_k (G):
+      /// the energy-momentum tensor's divergence where f acts.
+      void
+      body_force_term(const CrownPoint<dim> &p,
+                      const Tensor<1, dim>  &f,
+                      const Tensor<2, dim> (&du_aux)[n_modes],
+                      const std::vector<unsigned int> &active,
+                      const double                     JxW);
+
+      /// + int div(sigma^aux)_i u_i,k theta_k: along a curved 3D front the
+      /// auxiliary stress is not in equilibrium (aux_stress_divergence()).
+      void
+      divergence_term(const CrownPoint<dim>           &p,
+                      const std::vector<unsigned int> &active,
+                      const double                     JxW);
+
+      const Material                      &material;
+      const WilliamsField                 &unit;
+      const Crown<dim>                    &crown;
+      const TrilinosWrappers::MPI::Vector &solution;
+      IntegralDerivatives<dim>            *d_b;
+      const FEValuesExtractors::Vector     displacement{0};
+      const MappingQ1<dim>                 mapping;
+      /// Per point and test function: grad theta_j, theta_j.
+      std::vector<Tensor<2, dim>> grad_theta;
+      std::vector<Tensor<1, dim>> theta;
+      std::vector<Tensor<2, dim>> grad_u;
+    };
+
+
+
+    template <int dim>
+    void
+    FrontIntegrals<dim>::add_domain_terms(const FEValues<dim>  &fe_values,
+                                          const CellTheta<dim> &cell_theta,
+                                          const unsigned int    first,
+                                          const unsigned int    last,
+                                          const Function<dim>  *body_force)
+    {
+      const std::vector<unsigned int> &active = cell_theta.active_tests();
+      grad_u.resize(fe_values.n_quadrature_points);
+      fe_values[displacement].get_function_gradients(solution, grad_u);
+      Vector<double> f_value(dim);
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+        {
+          CrownPoint<dim> p(crown,
+                            fe_values.get_quadrature().point(q),
+                            fe_values.quadrature_point(q),
+                            first,
+                            last);
+          p.du             = grad_u[q];
+          const double JxW = fe_values.JxW(q);
+          const auto   grad_N =
+            CellTheta<dim>::shape_gradients(p.xi,
+                                            fe_values.inverse_jacobian(q));
+          for (const unsigned int j : active)
+            {
+              grad_theta[j] =
+                cell_theta.gradient(p.xi, grad_N, p.projection, p.xl, p.r, j);
+              theta[j] = cell_theta.value(p.xi, p.r, j);
+            }
+
+          Tensor<2, dim> du_aux[n_modes];
+          aux_gradients<dim, n_modes>(
+            unit, p.projection, p.xl, p.r, p.angle, du_aux);
+          domain_term(p, du_aux, active, JxW);
+          if (body_force != nullptr)
+            {
+              body_force->vector_value(p.x, f_value);
+              Tensor<1, dim> f;
+              for (unsigned int d = 0; d < dim; ++d)
+                f[d] = f_value[d];
+              body_force_term(p, f, du_aux, active, JxW);
+            }
+          if constexpr (dim == 3)
+            divergence_term(p, active, JxW);
+          if (d_b)
+            d_b->flush_point(fe_values, q);
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    FrontIntegrals<dim>::domain_term(const CrownPoint<dim> &p,
+                                     const Tensor<2, dim> (&du_aux)[n_modes],
+                                     const std::vector<unsigned int> &active,
+                                     const double                     JxW)
+    {
+      const Tensor<2, dim>         &du    = p.du;
+      const SymmetricTensor<2, dim> eps   = symmetrize(du);
+      const SymmetricTensor<2, dim> sigma = material.stress<dim>(eps);
+      Tensor<2, dim>                T[n_integrals];
+      for (unsigned int m = 0; m < n_modes; ++m)
+        {
+          const SymmetricTensor<2, dim> eps_aux = symmetrize(du_aux[m]);
+          const SymmetricTensor<2, dim> sigma_aux =
+            material.stress<dim>(eps_aux);
+          T[m] = transpose(du_aux[m]) * Tensor<2, dim>(sigma) +
+                 transpose(du) * Tensor<2, dim>(sigma_aux);
+          const double w = sigma * eps_aux;
+          for (unsigned int k = 0; k < dim; ++k)
+            T[m][k][k] -= w;
+        }
+      T[n_modes] = transpose(du) * Tensor<2, dim>(sigma);
+      for (unsigned int k = 0; k < dim; ++k)
+        T[n_modes][k][k] -= 0.5 * (sigma * eps);
+      for (const unsigned int j : active)
+        for (unsigned int m = 0; m < n_integrals; ++m)
+          b[j * n_integrals + m] += scalar_product(T[m], grad_theta[j]) * JxW;
+      if (d_b)
+        for (unsigned int m = 0; m < n_modes; ++m)
+          {
+            const Tensor<2, dim> sigma_aux(
+              material.stress<dim>(symmetrize(du_aux[m])));
+            for (const unsigned int j : active)
+              {
+                const Tensor<2, dim> &Theta = grad_theta[j];
+                const Tensor<2, dim>  A =
+                  Tensor<2, dim>(
+                    material.stress<dim>(symmetrize(du_aux[m] * Theta))) +
+                  sigma_aux * transpose(Theta) - trace(Theta) * sigma_aux;
+                d_b->add(j, m, A * JxW);
+              }
+          }
+    }
+
+
+
+    template <int dim>
+    void
+    FrontIntegrals<dim>::body_force_term(
+      const CrownPoint<dim> &p,
+      const Tensor<1, dim>  &f,
+      const Tensor<2, dim> (&du_aux)[n_modes],
+      const std::vector<unsigned int> &active,
+      const double                     JxW)
+    {
+      for (const unsigned int j : active)
+        {
+          for (unsigned int m = 0; m < n_modes; ++m)
+            b[j * n_integrals + m] -= (f * (du_aux[m] * theta[j])) * JxW;
+          b[j * n_integrals + n_modes] -= (f * (p.du * theta[j])) * JxW;
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    FrontIntegrals<dim>::divergence_term(
+      const CrownPoint<dim>           &p,
+      const std::vector<unsigned int> &active,
+      const double                     JxW)
+    {
+      if constexpr (dim == 3)
+        {
+          Tensor<1, dim> div_aux[n_modes];
+          aux_stress_divergence<n_modes>(
+            unit, crown.curve, p.x, p.projection, p.xl, p.angle, div_aux);
+          for (const unsigned int j : active)
+            {
+              const Tensor<1, dim> du_theta = p.du * theta[j];
+              for (unsigned int m = 0; m < n_modes; ++m)
+                {
+                  b[j * n_integrals + m] += (div_aux[m] * du_theta) * JxW;
+                  if (d_b)
+                    d_b->add(j, m, outer_product(div_aux[m], theta[j]) * JxW);
+                }
+            }
+        }
+      else
+        (void)p, (void)active, (void)JxW;
+    }
+
+
+
+    template <int dim>
+    void
+    FrontIntegrals<dim>::add_lip_terms(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      const CellTheta<dim>                                 &cell_theta,
+      const unsigned int                                    first,
+      const unsigned int                                    last,
+      const std::vector<Point<dim>>                        &points,
+      const std::vector<double>                            &weights,
+      const std::vector<Tensor<1, dim>>                    &normals,
+      const Function<dim>                                  *lip_pressure,
+      const typename InteractionIntegral<dim>::LipTraction &lip_traction)
+    {
+      // With a traction t on the lsn > 0 lip and -t on the other (a
+      // pressure: t = p n; contact): - int t_i [u_i,k] theta_k. Along a
+      // curved 3D front the auxiliary fields load the lips too: their hoop
+      // strain u_1 / rho is not zero on the lips in mode II, so sigma^aux .
+      // n is not, and + int (sigma^aux n . u_,k theta_k) [+ lip] - (the
+      // same) [- lip] completes the identity (it vanishes for straight
+      // fronts and in mode I).
+      const std::vector<unsigned int> &active = cell_theta.active_tests();
+      const std::vector<Point<dim>>    sides =
+        CellQuadrature::both_sides(points, normals);
+      FEValues<dim> side_values(mapping,
+                                cell->get_fe(),
+                                Quadrature<dim>(sides),
+                                update_gradients | update_jacobians |
+                                  update_quadrature_points);
+      side_values.reinit(cell);
+      grad_u.resize(sides.size());
+      side_values[displacement].get_function_gradients(solution, grad_u);
+      for (unsigned int k = 0; k < points.size(); ++k)
+        {
+          // n ds, to the lsn > 0 lip.
+          const Tensor<1, dim> n_ds =
+            CellQuadrature::mapped_normal<dim>(side_values.jacobian(2 * k),
+                                               normals[k],
+                                               weights[k]);
+          const CrownPoint<dim> p(
+            crown, points[k], side_values.quadrature_point(2 * k), first, last);
+          // t ds on the lsn > 0 lip.
+          Tensor<1, dim> t_ds =
+            (lip_pressure ? lip_pressure->value(p.x) : 0.) * n_ds;
+          if (lip_traction)
+            t_ds += n_ds.norm() * lip_traction(cell, k);
+          // The lsn > 0 lip lies at angle pi in the front frame if e2
+          // points to it, else at -pi (the start tip of a segment).
+          const double angle_plus =
+            ((p.projection.R * n_ds)[1] > 0 ? 1. : -1.) * numbers::PI;
+          Tensor<2, dim> plus[n_modes], minus[n_modes];
+          aux_gradients<dim, n_modes>(
+            unit, p.projection, p.xl, p.r, angle_plus, plus);
+          aux_gradients<dim, n_modes>(
+            unit, p.projection, p.xl, p.r, -angle_plus, minus);
+          Tensor<2, dim> jump[n_integrals];
+          for (unsigned int m = 0; m < n_modes; ++m)
+            jump[m] = plus[m] - minus[m];
+          jump[n_modes] = grad_u[2 * k] - grad_u[2 * k + 1];
+          for (const unsigned int j : active)
+            theta[j] = cell_theta.value(p.xi, p.r, j);
+          for (const unsigned int j : active)
+            for (unsigned int m = 0; m < n_integrals; ++m)
+              b[j * n_integrals + m] -= t_ds * (jump[m] * theta[j]);
+          if constexpr (dim == 3)
+            {
+              Tensor<1, dim> t_plus[n_modes], t_minus[n_modes];
+              for (unsigned int m = 0; m < n_modes; ++m)
+                {
+                  t_plus[m] = material.stress<dim>(symmetrize(plus[m])) * n_ds;
+                  t_minus[m] =
+                    material.stress<dim>(symmetrize(minus[m])) * n_ds;
+                }
+              for (const unsigned int j : active)
+                for (unsigned int m = 0; m < n_modes; ++m)
+                  b[j * n_integrals + m] +=
+                    t_plus[m] * (grad_u[2 * k] * theta[j]) -
+                    t_minus[m] * (grad_u[2 * k + 1] * theta[j]);
+              // The derivatives, one side after the other.
+              if (d_b)
+                for (const unsigned int side : {0u, 1u})
+                  {
+                    for (const unsigned int j : active)
+                      for (unsigned int m = 0; m < n_modes; ++m)
+                        d_b->add(j,
+                                 m,
+                                 side == 0 ?
+                                   outer_product(t_plus[m], theta[j]) :
+                                   -outer_product(t_minus[m], theta[j]));
+                    d_b->flush_point(side_values, 2 * k + side);
+                  }
+            }
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    FrontIntegrals<dim>::add_face_terms(
+      const typename DoFHandler<dim>::active_cell_iterator  &cell,
+      const CellTheta<dim>                                  &cell_theta,
+      const unsigned int                                     first,
+      const unsigned int                                     last,
+      const unsigned int                                     face_no,
+      const typename InteractionIntegral<dim>::BoundaryFace &face)
+    {
+      // With t the face's traction and n its outward normal (theta . n =
+      // 0): - t . (grad u^aux theta) - sigma^aux n . (grad u theta) for the
+      // modes, - t . (grad u theta) for G.
+      const Quadrature<dim> &rule = face.rule;
+      if (rule.size() == 0)
+        return;
+      const std::vector<unsigned int> &active = cell_theta.active_tests();
+      FEValues<dim>                    values(mapping,
+                           cell->get_fe(),
+                           rule,
+                           update_gradients | update_jacobians |
+                             update_quadrature_points);
+      values.reinit(cell);
+      grad_u.resize(rule.size());
+      values[displacement].get_function_gradients(solution, grad_u);
+      const Tensor<1, dim> normal =
+        GeometryInfo<dim>::unit_normal_vector[face_no];
+      Vector<double> traction(dim);
+      for (const unsigned int q : values.quadrature_point_indices())
+        {
+          // n dA, outward.
+          const Tensor<1, dim> n_dA =
+            CellQuadrature::mapped_normal<dim>(values.jacobian(q),
+                                               normal,
+                                               rule.weight(q));
+          CrownPoint<dim> p(
+            crown, rule.point(q), values.quadrature_point(q), first, last);
+          p.du = grad_u[q];
+          Tensor<1, dim> t_dA;
+          if (face.traction)
+            {
+              face.traction->vector_value(p.x, traction);
+              for (unsigned int d = 0; d < dim; ++d)
+                t_dA[d] = traction[d] * n_dA.norm();
+            }
+          Tensor<2, dim> du_aux[n_modes];
+          aux_gradients<dim, n_modes>(
+            unit, p.projection, p.xl, p.r, p.angle, du_aux);
+          Tensor<1, dim> aux_traction[n_modes];
+          for (unsigned int m = 0; m < n_modes; ++m)
+            aux_traction[m] =
+              material.stress<dim>(symmetrize(du_aux[m])) * n_dA;
+          for (const unsigned int j : active)
+            {
+              const Tensor<1, dim> theta_j  = cell_theta.value(p.xi, p.r, j);
+              const Tensor<1, dim> du_theta = p.du * theta_j;
+              for (unsigned int m = 0; m < n_modes; ++m)
+                {
+                  b[j * n_integrals + m] -=
+                    t_dA * (du_aux[m] * theta_j) + aux_traction[m] * du_theta;
+                  if (d_b)
+                    d_b->add(j, m, -outer_product(aux_traction[m], theta_j));
+                }
+              b[j * n_integrals + n_modes] -= t_dA * du_theta;
+            }
+          if (d_b)
+            d_b->flush_point(values, q);
+        }
+    }
+
+
+
+    /// E* of the interaction integral's relation: E / (1 - nu^2) (3D,
+    /// plane strain) or E (plane stress).
+    template <int dim>
+    double
+    effective_modulus(const Material &material)
+    {
+      const double nu = material.poisson_ratio;
+      return (dim == 2 &&
+                  material.plane_model == Material::PlaneModel::plane_stress ?
+                material.youngs_modulus :
+                material.youngs_modulus / (1 - nu * nu));
+    }
+
+
+
+    /// The derivatives of @p d_b, per test function of @p basis and scaled
+    /// as the K's, into @p derivatives with the weights that take them to
+    /// the basis nodes (the map the b_j take to the K's).
+    template <int dim>
+    void
+    store_derivatives(const FrontBasis         &basis,
+                      const Material           &material,
+                      IntegralDerivatives<dim> &d_b,
+                      KDerivatives             &derivatives)
+    {
+      constexpr unsigned int           n_modes = FrontIntegrals<dim>::n_modes;
+      const unsigned int               n_test  = basis.n_test_functions();
+      std::vector<std::vector<double>> to_nodes(n_test);
+      for (unsigned int j = 0; j < n_test; ++j)
+        {
+          std::vector<double> unit_b(n_test, 0.);
+          unit_b[j]   = 1;
+          to_nodes[j] = basis.values_at_nodes(unit_b);
+        }
+      const unsigned int first_test = derivatives.test_loads.size();
+      for (unsigned int j = 0; j < n_test; ++j)
+        {
+          std::vector<TrilinosWrappers::MPI::Vector> loads;
+          for (unsigned int m = 0; m < n_modes; ++m)
+            loads.push_back(
+              d_b.scaled(j,
+                         m,
+                         m < 2 ? 0.5 * effective_modulus<dim>(material) :
+                                 material.mu()));
+          derivatives.test_loads.push_back(std::move(loads));
+        }
+      for (unsigned int k = 0; k < basis.nodes().size(); ++k)
+        {
+          std::vector<std::pair<unsigned int, double>> weights;
+          for (unsigned int j = 0; j < n_test; ++j)
+            if (to_nodes[j][k] != 0)
+              weights.emplace_back(first_test + j, to_nodes[j][k]);
+          derivatives.node_weights.push_back(std::move(weights));
+        }
+    }
+
+
+
+    /// K and G at the nodes of @p crown's basis from the integrals @p b
+    /// (b_jm at j * n_integrals + m): I_m = 2/E* K_m (modes I, II),
+    /// K_III / mu (mode III).
+    template <int dim>
+    std::vector<FrontValues<dim>>
+    nodal_values(const Crown<dim>          &crown,
+                 const std::vector<double> &b,
+                 const Material            &material)
+    {
+      constexpr unsigned int n_modes     = FrontIntegrals<dim>::n_modes;
+      constexpr unsigned int n_integrals = FrontIntegrals<dim>::n_integrals;
+      const unsigned int     n_test      = crown.basis.n_test_functions();
+      const double           e_star      = effective_modulus<dim>(material);
+      std::vector<std::vector<double>> nodal(n_integrals);
+      for (unsigned int m = 0; m < n_integrals; ++m)
+        {
+          std::vector<double> b_m(n_test);
+          for (unsigned int j = 0; j < n_test; ++j)
+            b_m[j] = b[j * n_integrals + m];
+          nodal[m] = crown.basis.values_at_nodes(b_m);
+        }
+      std::vector<FrontValues<dim>> result;
+      for (unsigned int k = 0; k < crown.basis.nodes().size(); ++k)
+        {
+          FrontValues<dim> values;
+          values.basis = crown.basis.description();
+          values.point = crown.curve.at(crown.basis.nodes()[k]);
+          values.k_I   = 0.5 * e_star * nodal[0][k];
+          values.k_II  = 0.5 * e_star * nodal[1][k];
+          if (dim == 3)
+            values.k_III = material.mu() * nodal[n_modes - 1][k];
+          values.g = nodal[n_modes][k];
+          values.g_irwin =
+            (values.k_I * values.k_I + values.k_II * values.k_II) / e_star +
+            values.k_III * values.k_III / (2 * material.mu());
+          values.r_inf = crown.r_inf;
+          values.r_sup = crown.r_sup;
+          result.push_back(values);
+        }
+      return result;
+    }
+
+
+
+    /// The error thrown when a crown holds no vertex of the mesh.
+    template <int dim>
+    InputError
+    empty_crown(const Point<dim>  &first_point,
+                const unsigned int f,
+                const double       r_sup)
+    {
+      std::ostringstream message;
+      message << "Fracture parameters/Crown radii: the crown of "
+              << (dim == 2 ? "tip " : "front ") << f + 1 << " at ("
+              << first_point << ") (r_sup = " << r_sup
+              << ") holds no vertex of the mesh, so K and G would be 0 "
+                 "there; use radii of at least a cell there, or Crown "
+                 "unit = cells.";
+      return InputError(message.str());
+    }
+  } // namespace
+
+
+
   template <int dim>
   InteractionIntegral<dim>::InteractionIntegral(
     const FractureParameters &parameters,
@@ -163,423 +747,84 @@ namespace xcrack
     const LipsOf                                    &lips_of,
     const Function<dim>                             *body_force,
     KDerivatives                                    *derivatives,
-    const LipTraction                               &lip_traction) const
+    const LipTraction                               &lip_traction,
+    const BoundaryFaceOf                            &boundary_face_of) const
   {
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
-    const double   nu   = material.poisson_ratio;
-    const double   e_star =
-      (dim == 2 && material.plane_model == Material::PlaneModel::plane_stress ?
-         material.youngs_modulus :
-         material.youngs_modulus / (1 - nu * nu));
+    constexpr unsigned int n_modes = FrontIntegrals<dim>::n_modes;
     // Auxiliary fields: unit K_I, K_II (, K_III).
-    constexpr unsigned int n_modes = (dim == 3 ? 3 : 2);
-    // Integrals per test function: I for each mode, then G.
-    constexpr unsigned int n_integrals = n_modes + 1;
-    WilliamsField          unit;
+    WilliamsField unit;
     unit.mu    = material.mu();
     unit.kappa = material.kappa(dim);
-    const FEValuesExtractors::Vector displacement(0);
-    const MappingQ1<dim>             mapping;
-    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
 
     // Only the linear weight is interpolated from the vertices.
     std::optional<HangingVertices<dim>> hanging;
     if (!parameters.smooth_weight)
       hanging.emplace(dof_handler.get_triangulation());
-    // The distance of x from the front, in the normal plane of its foot.
-    const auto distance_to_foot =
-      [](const typename FrontCurve<dim>::Projection &projection,
-         const Point<dim>                           &x) {
-        const Tensor<1, dim> xl = projection.R * (x - projection.foot);
-        return std::hypot(xl[0], xl[1]);
-      };
 
     std::vector<FrontValues<dim>> result;
     for (unsigned int f = 0; f < fronts.size(); ++f)
       {
-        const unsigned int n_segments = fronts[f].size() - 1;
-        // Distance to the front (before the crown radii are known).
-        const FrontCurve<dim> polyline(fronts[f], 0);
-        const auto            distance = [&](const Point<dim> &x) {
-          double d = std::numeric_limits<double>::max();
-          if (n_segments == 0)
-            return x.distance(fronts[f][0].position);
-          for (unsigned int i = 0; i < n_segments; ++i)
-            d = std::min(d, polyline.segment_distance(i, x));
-          return d;
-        };
-
-        // The crown radii, in cells of the size of those the front crosses.
-        double h = std::numeric_limits<double>::max();
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned() &&
-              (dim == 2 ? cell->point_inside(fronts[f][0].position) :
-                          distance(cell->center()) < 0.5 * cell->diameter()))
-            h = std::min(h, cell->diameter() / std::sqrt(double(dim)));
-        h                   = Utilities::MPI::min(h, comm);
-        const double scale  = (parameters.crown_in_cells ? h : 1.);
-        const double r_inf  = parameters.crown_inner * scale;
-        const double r_sup  = parameters.crown_outer * scale;
-        const bool   smooth = parameters.smooth_weight;
-        // q(r): linear from r_inf to r_sup, or a smooth step (dq_dr).
-        const auto q_of_r = [&](const double r) {
-          const double t = std::clamp((r_sup - r) / (r_sup - r_inf), 0., 1.);
-          return smooth ? t * t * (3 - 2 * t) : t;
-        };
-        const auto dq_dr = [&](const double r) {
-          const double t = std::clamp((r_sup - r) / (r_sup - r_inf), 0., 1.);
-          return 6 * t * (1 - t) / (r_inf - r_sup);
-        };
-        const FrontCurve<dim> curve(fronts[f], 0.5 * r_sup);
-
-        // A test function must not vary along the front on a scale shorter
-        // than the crown, or theta_j is not resolved by the crown cells:
-        // the degree is capped at L / (2 r_sup) (said on screen).
-        const unsigned int degree =
-          std::min<unsigned int>(parameters.legendre_degree,
-                                 static_cast<unsigned int>(curve.length /
-                                                           (2 * r_sup)));
-        const FrontBasis basis =
-          (dim == 2 ? FrontBasis() :
-                      FrontBasis(parameters.smoothing,
-                                 degree,
-                                 curve.length,
-                                 curve.closed,
-                                 f < parameters.node_segments.size() ?
-                                   parameters.node_segments[f] :
-                                 parameters.front_segments > 0 ?
-                                   parameters.front_segments :
-                                   static_cast<unsigned int>(
-                                     std::round(curve.length / r_sup))));
-        const unsigned int  n_test = basis.n_test_functions();
-        std::vector<double> local(n_test * n_integrals, 0.);
-        // With derivatives: d b_jm / dU per test function j and mode m.
+        const Crown<dim>   crown(parameters, dof_handler, fronts, f);
+        const unsigned int n_test = crown.basis.n_test_functions();
         std::optional<IntegralDerivatives<dim>> d_b;
         if (derivatives)
           d_b.emplace(dof_handler.locally_owned_dofs(), comm, n_test, n_modes);
+        FrontIntegrals<dim> integrals(
+          material, unit, crown, solution, d_b ? &*d_b : nullptr);
+        CellTheta<dim> theta(crown, hanging ? &*hanging : nullptr);
 
-        // Other fronts or tips inside the crown.
-        bool clear = true;
-        // Whether the crown holds a vertex of the mesh at all (with crowns
-        // smaller than the cells, q vanishes at every vertex, and so do K
-        // and G).
-        bool sees_crown = false;
-        for (unsigned int g = 0; g < fronts.size(); ++g)
-          if (g != f)
-            for (const auto &other : fronts[g])
-              if (distance(other.position) < r_sup)
-                clear = false;
-
-        // Bounding box of the front grown by r_sup: cells beyond it carry
-        // no theta.
-        Point<dim> box_low = fronts[f][0].position, box_high = box_low;
-        for (const auto &p : fronts[f])
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              box_low[d]  = std::min(box_low[d], p.position[d] - r_sup);
-              box_high[d] = std::max(box_high[d], p.position[d] + r_sup);
-            }
-
-        std::vector<Tensor<2, dim>> grad_u;
-        Vector<double>              f_value(dim);
-        // Per vertex: q e1 (made tangent to the boundary; e1 alone with a
-        // smooth weight, whose q is evaluated at the points), psi_j(s).
-        std::array<Tensor<1, dim>, n_vertices>      w_vertex;
-        std::array<std::vector<double>, n_vertices> psi_vertex;
-        std::vector<unsigned int>                   active_tests;
-        std::vector<Tensor<2, dim>>                 grad_theta(n_test);
+        // Whether the crown is cut by the boundary, and whether it holds a
+        // vertex of the mesh at all (with crowns smaller than the cells, q
+        // vanishes at every vertex, and so do K and G).
+        bool on_boundary = false;
+        bool sees_crown  = false;
         for (const auto &cell : dof_handler.active_cell_iterators())
           {
             if (!cell->is_locally_owned())
               continue;
-            {
-              const Point<dim> c      = cell->center();
-              const double     margin = cell->diameter();
-              bool             inside = true;
-              for (unsigned int d = 0; d < dim; ++d)
-                inside = inside && c[d] > box_low[d] - margin &&
-                         c[d] < box_high[d] + margin;
-              if (!inside)
-                continue;
-            }
-            // The segments that can be nearest to a point of the cell.
-            unsigned int first = 0, last = std::max(n_segments, 1u);
-            if (n_segments > 1)
-              {
-                const auto near =
-                  curve.near_segments(cell->center(), cell->diameter());
-                if (near.distance > r_sup + cell->diameter())
-                  continue;
-                first = near.first;
-                last  = near.last;
-              }
-
-            // The boundary faces of the cell that hold its vertex v.
-            const auto boundary_faces_at = [&](const unsigned int v) {
-              std::vector<unsigned int> faces;
-              for (const unsigned int face : cell->face_indices())
-                if (cell->face(face)->at_boundary())
-                  for (const unsigned int fv :
-                       cell->face(face)->vertex_indices())
-                    if (cell->face(face)->vertex_index(fv) ==
-                        cell->vertex_index(v))
-                      faces.push_back(face);
-              return faces;
-            };
-            double q_min = 1, q_max = 0;
-            for (const unsigned int v : cell->vertex_indices())
-              {
-                const auto projection =
-                  curve.project(cell->vertex(v), first, last);
-                const double r = distance_to_foot(projection, cell->vertex(v));
-                // At a hanging vertex, the linear q is its masters'
-                // interpolation (any segment of the front may be nearest to
-                // them): q stays continuous across the faces of coarser
-                // neighbours. (A smooth q is evaluated at the points.)
-                std::vector<std::pair<Point<dim>, double>> masters;
-                if (hanging)
-                  masters = hanging->masters(cell, v);
-                double q = (masters.empty() ? q_of_r(r) : 0.);
-                for (const auto &[x, c] : masters)
-                  q += c * q_of_r(distance_to_foot(
-                             curve.project(x, 0, std::max(n_segments, 1u)), x));
-                // A smooth weight is read at the points: the cell's range
-                // of it, from the vertices' distances widened by the cell.
-                q_min =
-                  std::min(q_min, smooth ? q_of_r(r + cell->diameter()) : q);
-                q_max =
-                  std::max(q_max, smooth ? q_of_r(r - cell->diameter()) : q);
-                Tensor<1, dim> e1;
-                for (unsigned int d = 0; d < dim; ++d)
-                  e1[d] = projection.R[0][d];
-                w_vertex[v] = (smooth ? 1. : q) * e1;
-                psi_vertex[v].resize(n_test);
-                for (unsigned int j = 0; j < n_test; ++j)
-                  psi_vertex[v][j] = basis.test_function(j, projection.s);
-                // The domain form holds if theta . n = 0 on the boundary
-                // (or the boundary is traction free and theta tangent to
-                // it, the end of an open 3D front on a free surface).
-                if (q > 0 && !projection.at_end &&
-                    !boundary_faces_at(v).empty())
-                  clear = false;
-              }
-            if (q_max == 0)
+            const auto segments = crown.segments_near(cell);
+            if (!segments)
+              continue;
+            const auto [first, last] = *segments;
+            if (!theta.reinit(cell, first, last))
               continue;
             sees_crown = true;
-            // Free surfaces: theta tangent to the boundary faces of the
-            // cell at their vertices (Gram-Schmidt over their normals).
-            if constexpr (dim == 3)
-              for (const unsigned int v : cell->vertex_indices())
-                {
-                  std::vector<Tensor<1, dim>> normals;
-                  for (const unsigned int face : boundary_faces_at(v))
-                    {
-                      Tensor<1, dim> n =
-                        cross_product_3d(cell->face(face)->vertex(1) -
-                                           cell->face(face)->vertex(0),
-                                         cell->face(face)->vertex(2) -
-                                           cell->face(face)->vertex(0));
-                      for (const auto &m : normals)
-                        n -= (n * m) * m;
-                      if (n.norm() >
-                          1e-12 * cell->diameter() * cell->diameter())
-                        normals.push_back(n / n.norm());
-                    }
-                  for (const auto &n : normals)
-                    w_vertex[v] -= (w_vertex[v] * n) * n;
-                }
-            active_tests.clear();
-            for (unsigned int j = 0; j < n_test; ++j)
-              for (const unsigned int v : cell->vertex_indices())
-                if (psi_vertex[v][j] != 0 && w_vertex[v].norm() > 0)
-                  {
-                    active_tests.push_back(j);
-                    break;
-                  }
             if (derivatives)
-              d_b->reinit(cell, active_tests);
-            // The interpolant of the vertices' psi_j w at reference point
-            // xi, and theta_j there, at distance r from the front.
-            const auto interpolant = [&](const Point<dim>  &xi,
-                                         const unsigned int j) {
-              Tensor<1, dim> value;
-              for (unsigned int v = 0; v < n_vertices; ++v)
-                value += (psi_vertex[v][j] *
-                          GeometryInfo<dim>::d_linear_shape_function(xi, v)) *
-                         w_vertex[v];
-              return value;
-            };
-            const auto theta_at =
-              [&](const Point<dim> &xi, const double r, const unsigned int j) {
-                return (smooth ? q_of_r(r) : 1.) * interpolant(xi, j);
-              };
+              d_b->reinit(cell, theta.active_tests());
 
             // Domain terms: where theta varies (2D: where q does), and
             // wherever theta is not zero under a body force.
-            if (dim == 3 || q_max > q_min || (body_force != nullptr))
-              {
-                const FEValues<dim> &fe_values = fe_values_of(cell);
-                grad_u.resize(fe_values.n_quadrature_points);
-                fe_values[displacement].get_function_gradients(solution,
-                                                               grad_u);
-                for (const unsigned int q :
-                     fe_values.quadrature_point_indices())
-                  {
-                    const Point<dim> &xi = fe_values.get_quadrature().point(q);
-                    // grad_x theta_j = sum_v psi_j(v) w_v (x) (d xi/d x)^T
-                    // grad_xi N_v.
-                    const DerivativeForm<1, dim, dim> &inverse =
-                      fe_values.inverse_jacobian(q);
-                    std::array<Tensor<1, dim>, n_vertices> grad_N;
-                    for (unsigned int v = 0; v < n_vertices; ++v)
-                      {
-                        const Tensor<1, dim> g =
-                          GeometryInfo<dim>::d_linear_shape_function_gradient(
-                            xi, v);
-                        grad_N[v] = Tensor<1, dim>();
-                        for (unsigned int j = 0; j < dim; ++j)
-                          for (unsigned int k = 0; k < dim; ++k)
-                            grad_N[v][j] += g[k] * inverse[k][j];
-                      }
-                    const Point<dim> &x   = fe_values.quadrature_point(q);
-                    const auto projection = curve.project(x, first, last);
-                    const Tensor<1, dim> xl =
-                      projection.R * (x - projection.foot);
-                    const double r     = std::hypot(xl[0], xl[1]);
-                    const double angle = std::atan2(xl[1], xl[0]);
-                    const double JxW   = fe_values.JxW(q);
-
-                    // With a smooth weight theta_j = q(r) I_h(psi_j e1):
-                    // q'(r) I_h(psi_j e1) (x) grad r + q(r) grad I_h(...),
-                    // grad r the unit vector from the foot in the normal
-                    // plane.
-                    Tensor<1, dim> grad_r;
-                    if (smooth && r > 0)
-                      for (unsigned int d = 0; d < dim; ++d)
-                        grad_r[d] = (projection.R[0][d] * xl[0] +
-                                     projection.R[1][d] * xl[1]) /
-                                    r;
-                    for (const unsigned int j : active_tests)
-                      {
-                        grad_theta[j] = Tensor<2, dim>();
-                        for (unsigned int v = 0; v < n_vertices; ++v)
-                          grad_theta[j] +=
-                            outer_product(psi_vertex[v][j] * w_vertex[v],
-                                          grad_N[v]);
-                        if (smooth)
-                          grad_theta[j] =
-                            q_of_r(r) * grad_theta[j] +
-                            dq_dr(r) *
-                              outer_product(interpolant(xi, j), grad_r);
-                      }
-
-                    const Tensor<2, dim>         &du  = grad_u[q];
-                    const SymmetricTensor<2, dim> eps = symmetrize(du);
-                    const SymmetricTensor<2, dim> sigma =
-                      material.stress<dim>(eps);
-
-                    // T_kj with I = int T_kj theta_k,j.
-                    Tensor<2, dim> T[n_integrals];
-                    Tensor<2, dim> du_aux[n_modes];
-                    aux_gradients<dim, n_modes>(
-                      unit, projection, xl, r, angle, du_aux);
-                    for (unsigned int m = 0; m < n_modes; ++m)
-                      {
-                        const SymmetricTensor<2, dim> eps_aux =
-                          symmetrize(du_aux[m]);
-                        const SymmetricTensor<2, dim> sigma_aux =
-                          material.stress<dim>(eps_aux);
-                        T[m] = transpose(du_aux[m]) * Tensor<2, dim>(sigma) +
-                               transpose(du) * Tensor<2, dim>(sigma_aux);
-                        const double w = sigma * eps_aux;
-                        for (unsigned int k = 0; k < dim; ++k)
-                          T[m][k][k] -= w;
-                      }
-                    T[n_modes] = transpose(du) * Tensor<2, dim>(sigma);
-                    for (unsigned int k = 0; k < dim; ++k)
-                      T[n_modes][k][k] -= 0.5 * (sigma * eps);
-                    for (const unsigned int j : active_tests)
-                      for (unsigned int m = 0; m < n_integrals; ++m)
-                        local[j * n_integrals + m] +=
-                          scalar_product(T[m], grad_theta[j]) * JxW;
-                    // T[m] : Theta for du = G is G : A with A = C :
-                    // sym(du_aux Theta) + sigma_aux Theta^T - tr(Theta)
-                    // sigma_aux.
-                    if (derivatives)
-                      for (unsigned int m = 0; m < n_modes; ++m)
-                        {
-                          const Tensor<2, dim> sigma_aux(
-                            material.stress<dim>(symmetrize(du_aux[m])));
-                          for (const unsigned int j : active_tests)
-                            {
-                              const Tensor<2, dim> &Theta = grad_theta[j];
-                              const Tensor<2, dim>  A =
-                                Tensor<2, dim>(material.stress<dim>(
-                                  symmetrize(du_aux[m] * Theta))) +
-                                sigma_aux * transpose(Theta) -
-                                trace(Theta) * sigma_aux;
-                              d_b->add(j, m, A * JxW);
-                            }
-                        }
-
-                    // Body force: - int f_i u_i,k theta_k (u^aux for I).
-                    if (body_force != nullptr)
-                      {
-                        body_force->vector_value(x, f_value);
-                        Tensor<1, dim> f;
-                        for (unsigned int d = 0; d < dim; ++d)
-                          f[d] = f_value[d];
-                        for (const unsigned int j : active_tests)
-                          {
-                            const Tensor<1, dim> theta = theta_at(xi, r, j);
-                            for (unsigned int m = 0; m < n_modes; ++m)
-                              local[j * n_integrals + m] -=
-                                (f * (du_aux[m] * theta)) * JxW;
-                            local[j * n_integrals + n_modes] -=
-                              (f * (du * theta)) * JxW;
-                          }
-                      }
-
-                    // Along a curved 3D front the auxiliary stress is not
-                    // in equilibrium: + int div(sigma^aux)_i u_i,k theta_k.
-                    if constexpr (dim == 3)
-                      {
-                        Tensor<1, dim> div_aux[n_modes];
-                        aux_stress_divergence<n_modes>(
-                          unit, curve, x, projection, xl, angle, div_aux);
-                        for (const unsigned int j : active_tests)
-                          {
-                            const Tensor<1, dim> theta    = theta_at(xi, r, j);
-                            const Tensor<1, dim> du_theta = du * theta;
-                            for (unsigned int m = 0; m < n_modes; ++m)
-                              {
-                                local[j * n_integrals + m] +=
-                                  (div_aux[m] * du_theta) * JxW;
-                                if (derivatives)
-                                  d_b->add(j,
-                                           m,
-                                           outer_product(div_aux[m], theta) *
-                                             JxW);
-                              }
-                          }
-                      }
-                    if (derivatives)
-                      d_b->flush_point(fe_values, q);
-                  }
-              }
-
-            // The cell's derivatives so far into the global ones.
+            if (dim == 3 || theta.varies() || body_force != nullptr)
+              integrals.add_domain_terms(
+                fe_values_of(cell), theta, first, last, body_force);
             if (derivatives)
               d_b->flush_cell(*derivatives->constraints);
 
-            // Lip terms. With a traction t on the lsn > 0 lip and -t on the
-            // other (a pressure: t = p n; contact): - int t_i [u_i,k]
-            // theta_k. Along a curved 3D
-            // front the auxiliary fields load the lips too: their hoop
-            // strain u_1 / rho is not zero on the lips in mode II, so
-            // sigma^aux . n is not, and + int (sigma^aux n . u_,k theta_k)
-            // [+ lip] - (the same) [- lip] completes the identity (it
-            // vanishes for straight fronts and in mode I).
+            // The body's faces the crown crosses: free and loaded ones add
+            // their term; the others make the K's unreliable, except where
+            // the front ends on them (as in a plane-strain slice).
+            if (cell->at_boundary())
+              for (const unsigned int face : cell->face_indices())
+                if (cell->face(face)->at_boundary() &&
+                    theta.reaches(cell, face, true))
+                  {
+                    BoundaryFace boundary_face;
+                    boundary_face.constrained = true;
+                    if (dim == 3 && boundary_face_of)
+                      boundary_face = boundary_face_of(cell, face);
+                    if (boundary_face.constrained)
+                      on_boundary =
+                        on_boundary || theta.reaches(cell, face, false);
+                    else
+                      {
+                        integrals.add_face_terms(
+                          cell, theta, first, last, face, boundary_face);
+                        if (derivatives)
+                          d_b->flush_cell(*derivatives->constraints);
+                      }
+                  }
+
             if (lip_pressure == nullptr && !lip_traction && dim == 2)
               continue;
             std::vector<Point<dim>>     points;
@@ -588,160 +833,33 @@ namespace xcrack
             lips_of(cell, points, weights, normals);
             if (points.empty())
               continue;
-            const std::vector<Point<dim>> sides =
-              CellQuadrature::both_sides(points, normals);
-            FEValues<dim> side_values(mapping,
-                                      cell->get_fe(),
-                                      Quadrature<dim>(sides),
-                                      update_gradients | update_jacobians |
-                                        update_quadrature_points);
-            side_values.reinit(cell);
-            grad_u.resize(sides.size());
-            side_values[displacement].get_function_gradients(solution, grad_u);
-            for (unsigned int k = 0; k < points.size(); ++k)
-              {
-                // n ds, to the lsn > 0 lip.
-                const Tensor<1, dim> n_ds = CellQuadrature::mapped_normal<dim>(
-                  side_values.jacobian(2 * k), normals[k], weights[k]);
-                const Point<dim> x_global = side_values.quadrature_point(2 * k);
-                // t ds on the lsn > 0 lip.
-                Tensor<1, dim> t_ds =
-                  (lip_pressure ? lip_pressure->value(x_global) : 0.) * n_ds;
-                if (lip_traction)
-                  t_ds += n_ds.norm() * lip_traction(cell, k);
-                const auto projection    = curve.project(x_global, first, last);
-                const Tensor<2, dim> &R  = projection.R;
-                const Tensor<1, dim>  xl = R * (x_global - projection.foot);
-                const double          r  = std::hypot(xl[0], xl[1]);
-                // The lsn > 0 lip lies at angle pi in the front frame if e2
-                // points to it, else at -pi (the start tip of a segment).
-                const double angle_plus =
-                  ((R * n_ds)[1] > 0 ? 1. : -1.) * numbers::PI;
-                Tensor<2, dim> plus[n_modes], minus[n_modes];
-                aux_gradients<dim, n_modes>(
-                  unit, projection, xl, r, angle_plus, plus);
-                aux_gradients<dim, n_modes>(
-                  unit, projection, xl, r, -angle_plus, minus);
-                Tensor<2, dim> jump[n_integrals];
-                for (unsigned int m = 0; m < n_modes; ++m)
-                  jump[m] = plus[m] - minus[m];
-                jump[n_modes] = grad_u[2 * k] - grad_u[2 * k + 1];
-                for (const unsigned int j : active_tests)
-                  {
-                    const Tensor<1, dim> theta = theta_at(points[k], r, j);
-                    for (unsigned int m = 0; m < n_integrals; ++m)
-                      local[j * n_integrals + m] -= t_ds * (jump[m] * theta);
-                  }
-                if constexpr (dim == 3)
-                  {
-                    Tensor<1, dim> t_plus[n_modes], t_minus[n_modes];
-                    for (unsigned int m = 0; m < n_modes; ++m)
-                      {
-                        t_plus[m] =
-                          material.stress<dim>(symmetrize(plus[m])) * n_ds;
-                        t_minus[m] =
-                          material.stress<dim>(symmetrize(minus[m])) * n_ds;
-                      }
-                    for (const unsigned int j : active_tests)
-                      {
-                        const Tensor<1, dim> theta = theta_at(points[k], r, j);
-                        for (unsigned int m = 0; m < n_modes; ++m)
-                          local[j * n_integrals + m] +=
-                            t_plus[m] * (grad_u[2 * k] * theta) -
-                            t_minus[m] * (grad_u[2 * k + 1] * theta);
-                      }
-                    // The derivatives, one side after the other.
-                    if (derivatives)
-                      for (const unsigned int side : {0u, 1u})
-                        {
-                          for (const unsigned int j : active_tests)
-                            {
-                              const Tensor<1, dim> theta =
-                                theta_at(points[k], r, j);
-                              for (unsigned int m = 0; m < n_modes; ++m)
-                                d_b->add(j,
-                                         m,
-                                         side == 0 ?
-                                           outer_product(t_plus[m], theta) :
-                                           -outer_product(t_minus[m], theta));
-                            }
-                          d_b->flush_point(side_values, 2 * k + side);
-                        }
-                  }
-              }
+            integrals.add_lip_terms(cell,
+                                    theta,
+                                    first,
+                                    last,
+                                    points,
+                                    weights,
+                                    normals,
+                                    lip_pressure,
+                                    lip_traction);
             if (derivatives)
               d_b->flush_cell(*derivatives->constraints);
           }
 
-        std::vector<double> b_all(local.size());
-        Utilities::MPI::sum(ArrayView<const double>(local),
+        std::vector<double> b(integrals.b.size());
+        Utilities::MPI::sum(ArrayView<const double>(integrals.b),
                             comm,
-                            ArrayView<double>(b_all));
-        clear = !Utilities::MPI::logical_or(!clear, comm);
+                            ArrayView<double>(b));
+        const bool clear = crown.clear_of_other_fronts &&
+                           !Utilities::MPI::logical_or(on_boundary, comm);
         if (!Utilities::MPI::logical_or(sees_crown, comm))
-          {
-            std::ostringstream message;
-            message << "Fracture parameters/Crown radii: the crown of "
-                    << (dim == 2 ? "tip " : "front ") << f + 1 << " at ("
-                    << fronts[f][0].position << ") (r_sup = " << r_sup
-                    << ") holds no vertex of the mesh, so K and G would be 0 "
-                       "there; use radii of at least a cell there, or Crown "
-                       "unit = cells.";
-            throw InputError(message.str());
-          }
-        std::vector<std::vector<double>> nodal(n_integrals);
-        for (unsigned int m = 0; m < n_integrals; ++m)
-          {
-            std::vector<double> b(n_test);
-            for (unsigned int j = 0; j < n_test; ++j)
-              b[j] = b_all[j * n_integrals + m];
-            nodal[m] = basis.values_at_nodes(b);
-          }
-        // dK: per test function, scaled as the K's, and the weights that
-        // take them to the nodes (the map the b_j take above).
+          throw empty_crown(fronts[f][0].position, f, crown.r_sup);
+
         if (derivatives)
+          store_derivatives(crown.basis, material, *d_b, *derivatives);
+        for (FrontValues<dim> &values : nodal_values(crown, b, material))
           {
-            std::vector<std::vector<double>> to_nodes(n_test);
-            for (unsigned int j = 0; j < n_test; ++j)
-              {
-                std::vector<double> unit_b(n_test, 0.);
-                unit_b[j]   = 1;
-                to_nodes[j] = basis.values_at_nodes(unit_b);
-              }
-            const unsigned int first_test = derivatives->test_loads.size();
-            for (unsigned int j = 0; j < n_test; ++j)
-              {
-                std::vector<TrilinosWrappers::MPI::Vector> loads;
-                for (unsigned int m = 0; m < n_modes; ++m)
-                  loads.push_back(
-                    d_b->scaled(j, m, m < 2 ? 0.5 * e_star : material.mu()));
-                derivatives->test_loads.push_back(std::move(loads));
-              }
-            for (unsigned int k = 0; k < basis.nodes().size(); ++k)
-              {
-                std::vector<std::pair<unsigned int, double>> weights;
-                for (unsigned int j = 0; j < n_test; ++j)
-                  if (to_nodes[j][k] != 0)
-                    weights.emplace_back(first_test + j, to_nodes[j][k]);
-                derivatives->node_weights.push_back(std::move(weights));
-              }
-          }
-        for (unsigned int k = 0; k < basis.nodes().size(); ++k)
-          {
-            FrontValues<dim> values;
-            values.front = f;
-            values.basis = basis.description();
-            values.point = curve.at(basis.nodes()[k]);
-            values.k_I   = 0.5 * e_star * nodal[0][k];
-            values.k_II  = 0.5 * e_star * nodal[1][k];
-            if (dim == 3)
-              values.k_III = material.mu() * nodal[n_modes - 1][k];
-            values.g = nodal[n_modes][k];
-            values.g_irwin =
-              (values.k_I * values.k_I + values.k_II * values.k_II) / e_star +
-              values.k_III * values.k_III / (2 * material.mu());
-            values.r_inf       = r_inf;
-            values.r_sup       = r_sup;
+            values.front       = f;
             values.crown_clear = clear;
             result.push_back(values);
           }

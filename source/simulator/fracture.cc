@@ -61,7 +61,8 @@ namespace xcrack
       contact_traction = [this](const auto &cell, const unsigned int k) {
         return contact->lip_traction(cell->id(), k);
       };
-    front_values = integral.compute(dof_handler,
+    const auto faces = boundary_face_of(state);
+    front_values     = integral.compute(dof_handler,
                                     solution,
                                     fronts,
                                     fe_values_of,
@@ -69,7 +70,8 @@ namespace xcrack
                                     lips_of,
                                     body_force.get(),
                                     nullptr,
-                                    contact_traction);
+                                    contact_traction,
+                                    faces);
     // Where the lips touch at the front, it is closed. Without contact, a
     // negative K_I says that the lips pass through each other there: the
     // point is closed too, and its K's are those of a body that does not
@@ -521,6 +523,32 @@ namespace xcrack
       outer = std::max(outer, fracture_parameters.crown_outer);
     k_error_cells.crown_inner = wide_inner_fraction * outer;
     k_error_cells.crown_outer = outer;
+  }
+
+
+
+  template <int dim>
+  typename InteractionIntegral<dim>::BoundaryFaceOf
+  Simulator<dim>::boundary_face_of(const LoadState<dim> &state) const
+  {
+    // The Neumann data of the state, scaled by its factor, shared by the
+    // returned function's copies.
+    auto tractions = std::make_shared<
+      std::map<types::boundary_id, std::shared_ptr<const Function<dim>>>>();
+    for (const auto &[id, traction] : state.loads->neumann)
+      (*tractions)[id] = scaled(traction.get(), state);
+    return
+      [this, tractions, &state](const auto &cell, const unsigned int face_no) {
+        typename InteractionIntegral<dim>::BoundaryFace face;
+        const types::boundary_id id = cell->face(face_no)->boundary_id();
+        face.constrained            = state.loads->dirichlet.count(id) > 0;
+        const auto traction         = tractions->find(id);
+        if (traction != tractions->end())
+          face.traction = traction->second.get();
+        if (!face.constrained)
+          face.rule = enrichment->boundary_face_quadrature(cell, face_no);
+        return face;
+      };
   }
 
 

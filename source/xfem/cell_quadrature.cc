@@ -765,8 +765,7 @@ namespace xcrack
       // from its midpoint, off the real axis: the worst place for the
       // singularity of a line of the tensor rule (beside the middle of a
       // face, not beyond a corner).
-      const double rho =
-        2 * distance + std::sqrt(1 + 4 * distance * distance);
+      const double rho = 2 * distance + std::sqrt(1 + 4 * distance * distance);
       const double n   = std::log(1 / tolerance) / (2 * std::log(rho));
       if (n > 1000)
         return std::numeric_limits<unsigned int>::max();
@@ -803,6 +802,68 @@ namespace xcrack
 
 
 
+    template <int dim>
+    Quadrature<dim>
+    boundary_face_rule(const std::vector<double> &lsn,
+                       const std::vector<double> &lst,
+                       const unsigned int         face_no,
+                       const unsigned int         n_points_1d)
+    {
+      if constexpr (dim == 3)
+        {
+          // The face's coordinates p, cyclic after its normal direction as
+          // in face_rule(); the face's Q1 level sets are the cell's
+          // restricted to it.
+          const unsigned int direction = face_no / 2;
+          const auto         in_cell   = [&](const Point<dim - 1> &p) {
+            Point<dim> x;
+            x[direction] = face_no % 2;
+            for (unsigned int k = 0; k + 1 < dim; ++k)
+              x[(direction + 1 + k) % dim] = p[k];
+            return x;
+          };
+          const ReferenceCellLevelSet<dim> normal(lsn);
+          const ReferenceCellLevelSet<dim> tangent(lst);
+          std::vector<double>              face_lsn, face_lst;
+          for (unsigned int v = 0; v < GeometryInfo<dim - 1>::vertices_per_cell;
+               ++v)
+            {
+              const Point<dim> x =
+                in_cell(GeometryInfo<dim - 1>::unit_cell_vertex(v));
+              face_lsn.push_back(normal.value(x));
+              face_lst.push_back(tangent.value(x));
+            }
+          const auto [lsn_min, lsn_max] =
+            std::minmax_element(face_lsn.begin(), face_lsn.end());
+          Quadrature<dim - 1> rule = QGauss<dim - 1>(n_points_1d);
+          if (*lsn_min < 0 && *lsn_max > 0)
+            rule = (*std::max_element(face_lst.begin(), face_lst.end()) > 0 ?
+                      tip_cell_rule<dim - 1>(face_lsn, face_lst, n_points_1d) :
+                      cut_cell_rule<dim - 1>(face_lsn, n_points_1d).first);
+          std::vector<Point<dim>> points;
+          for (const Point<dim - 1> &p : rule.get_points())
+            points.push_back(in_cell(p));
+          return Quadrature<dim>(points, rule.get_weights());
+        }
+      else
+        {
+          (void)lsn, (void)lst, (void)face_no, (void)n_points_1d;
+          return Quadrature<dim>();
+        }
+    }
+
+
+
+    template Quadrature<2>
+    boundary_face_rule<2>(const std::vector<double> &,
+                          const std::vector<double> &,
+                          const unsigned int,
+                          const unsigned int);
+    template Quadrature<3>
+    boundary_face_rule<3>(const std::vector<double> &,
+                          const std::vector<double> &,
+                          const unsigned int,
+                          const unsigned int);
     template double
     front_distance<2>(const std::vector<double> &, const std::vector<double> &);
     template double

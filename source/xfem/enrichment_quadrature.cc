@@ -138,6 +138,22 @@ namespace xcrack
 
 
   template <int dim>
+  Quadrature<dim>
+  Enrichment<dim>::boundary_face_quadrature(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const unsigned int                                    face_no) const
+  {
+    const auto [lsn, lst] = level_set_values(cell);
+    return CellQuadrature::boundary_face_rule<dim>(
+      lsn,
+      lst,
+      face_no,
+      std::max(assembly_points_1d, parameters.tip_quadrature_points));
+  }
+
+
+
+  template <int dim>
   const Quadrature<dim> &
   Enrichment<dim>::split_cell_quadrature(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
@@ -163,6 +179,14 @@ namespace xcrack
   template NonMatching::ImmersedSurfaceQuadrature<3>
   Enrichment<3>::lip_quadrature(
     const DoFHandler<3>::active_cell_iterator &) const;
+  template Quadrature<2>
+  Enrichment<2>::boundary_face_quadrature(
+    const DoFHandler<2>::active_cell_iterator &,
+    const unsigned int) const;
+  template Quadrature<3>
+  Enrichment<3>::boundary_face_quadrature(
+    const DoFHandler<3>::active_cell_iterator &,
+    const unsigned int) const;
   template const Quadrature<2> &
   Enrichment<2>::split_cell_quadrature(
     const DoFHandler<2>::active_cell_iterator &,

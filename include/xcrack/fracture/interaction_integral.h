@@ -200,6 +200,22 @@ namespace xcrack
    * a 2D tip), and the b_j = I(theta_j) give K(s) at the basis nodes. The
    * domain terms are integrated with the cell's X-FEM rule (cut and tip
    * rules where the crack is), as the jumps and singular gradients need.
+   *
+   * Where a crown crosses a face of the body without Dirichlet data (with
+   * theta . n = 0 there), that face is part of the boundary of the
+   * identity's domain: with the traction t on it (zero on a free face),
+   *
+   *   G gains  - int_face t_i u_i,k theta_k dA,
+   *   I gains  - int_face (t_i u^aux_i,k + sigma^aux_ij n_j u_i,k) theta_k dA.
+   *
+   * On a free face the first vanishes, but the auxiliary fields do not
+   * satisfy the face's traction condition (their sigma^aux n is not zero:
+   * plane-strain fields carry sigma^aux_33 = nu (sigma^aux_11 +
+   * sigma^aux_22) across a face normal to the front), so the second does
+   * not; without it, K at the ends of a surface crack's front falls far
+   * below the G-theta value (doc/verification/sif-3d.md, "Where the front
+   * meets a free surface"). Walters, Paulino and Dodds (2005) carry the
+   * same term for loaded crack faces.
    */
   template <int dim>
   class InteractionIntegral
@@ -222,6 +238,28 @@ namespace xcrack
     using LipTraction =
       std::function<Tensor<1, dim>(const CellIterator &, const unsigned int)>;
 
+    /**
+     * A boundary face of a cell that a crown crosses, and what the body's
+     * boundary carries there. On a face without a Dirichlet condition the
+     * identity gains the face's term (InteractionIntegral), integrated by
+     * @p rule; a face with one makes the crown unreliable (its reaction is
+     * not known).
+     */
+    struct BoundaryFace
+    {
+      /// A Dirichlet condition (of any component) holds there.
+      bool constrained = false;
+      /// The traction on the face (force per area, dim components; null:
+      /// a traction-free face).
+      const Function<dim> *traction = nullptr;
+      /// Reference points of the cell on the face and their weights (the
+      /// face's reference measure), the crack's jump and front resolved.
+      Quadrature<dim> rule;
+    };
+    /// The BoundaryFace of face @p face_no of a cell (at the boundary).
+    using BoundaryFaceOf =
+      std::function<BoundaryFace(const CellIterator &, const unsigned int)>;
+
     InteractionIntegral(const FractureParameters &parameters,
                         const Material           &material);
 
@@ -233,7 +271,11 @@ namespace xcrack
      * @p lip_pressure and @p body_force (dim components) may be null;
      * @p lip_traction adds to the pressure where given. With
      * @p derivatives, also dK/dU of every K returned (of K's linear part:
-     * the lip traction counts as given). Collective.
+     * the lip traction counts as given). With @p boundary_face_of, the
+     * faces of the body a crown crosses add their term (free and loaded
+     * faces) or flag the K's (Dirichlet faces); without, any crown that
+     * reaches the boundary other than beyond an end of its front is
+     * flagged. Collective.
      */
     std::vector<FrontValues<dim>>
     compute(const DoFHandler<dim>                           &dof_handler,
@@ -242,9 +284,10 @@ namespace xcrack
             const FEValuesOf                                &fe_values_of,
             const Function<dim>                             *lip_pressure,
             const LipsOf                                    &lips_of,
-            const Function<dim> *body_force   = nullptr,
-            KDerivatives        *derivatives  = nullptr,
-            const LipTraction   &lip_traction = LipTraction()) const;
+            const Function<dim>  *body_force       = nullptr,
+            KDerivatives         *derivatives      = nullptr,
+            const LipTraction    &lip_traction     = LipTraction(),
+            const BoundaryFaceOf &boundary_face_of = BoundaryFaceOf()) const;
 
   private:
     const FractureParameters &parameters;

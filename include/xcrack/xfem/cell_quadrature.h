@@ -86,6 +86,24 @@ namespace xcrack
               const double               zero);
 
     /**
+     * A rule on face @p face_no of the reference cell (points in the
+     * cell's coordinates, weights the face's reference measure) for
+     * integrals over a face of the body the crack meets: where lsn changes
+     * sign on the face, the displacement jumps across the crack's trace,
+     * and where the front ends on the face its gradients grow like r^-1/2.
+     * Such a face gets the 2D rule of the level sets restricted to it (the
+     * fan of tip_cell_rule() about the point where the front meets the
+     * face, or cut_cell_rule() behind the front), every other face a Gauss
+     * rule; @p n_points_1d points per direction. 3D only (empty in 2D).
+     */
+    template <int dim>
+    Quadrature<dim>
+    boundary_face_rule(const std::vector<double> &lsn,
+                       const std::vector<double> &lst,
+                       const unsigned int         face_no,
+                       const unsigned int         n_points_1d);
+
+    /**
      * Where the jumps across the lips are read: for each lip point (reference
      * coordinates) with unit reference normal, the point @p offset along
      * the normal (the lsn > 0 side) and the point @p offset against it,

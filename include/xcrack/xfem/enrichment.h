@@ -348,6 +348,18 @@ namespace xcrack
     lip_quadrature(
       const typename DoFHandler<dim>::active_cell_iterator &cell) const;
 
+    /**
+     * The rule on the boundary face @p face_no of @p cell (reference
+     * coordinates of the cell, weights the face's reference measure): what
+     * the K extraction's free-surface term integrates with where a crown
+     * crosses the body's boundary (CellQuadrature::boundary_face_rule(),
+     * with `Tip quadrature points` where the crack meets the face).
+     */
+    Quadrature<dim>
+    boundary_face_quadrature(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      const unsigned int                                    face_no) const;
+
     /// The quadrature of split cells (see special_quadrature()).
     const Quadrature<dim> &
     split_cell_quadrature(

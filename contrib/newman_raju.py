@@ -1,0 +1,112 @@
+#!/usr/bin/env python3
+"""Newman and Raju's stress intensity factors of a semi-elliptical surface
+crack in a finite plate (Newman and Raju 1981, Eng. Fract. Mech. 15;
+NASA TM-83200 1981 for tension and bending), the handbook values the
+surface-crack benchmarks compare against. Their stated accuracy is about
+5 % for 0 < a/c <= 1, a/t <= 0.8, c/b < 0.5, 0 <= phi <= pi/2.
+
+a: depth, c: half-length on the face, t: thickness, b: half-width of the
+plate; phi the parametric angle of the ellipse (x = c cos phi, y = a sin
+phi; phi = 0 where the front meets the face, pi/2 at the deepest point).
+
+  contrib/newman_raju.py --a 0.6 --c 1 --t 2 --b 4            # a table
+  contrib/newman_raju.py --a 0.6 --c 1 --t 2 --b 4 --expression
+      # 'Reference K' of a prm: K_I as an expression of the front point's
+      # x (along the face) and y (depth), centre at the origin.
+"""
+import argparse
+import math
+
+
+def shape_factor(a_c):
+    """Q, the square of the complete elliptic integral of the second kind,
+    by the approximation Newman and Raju use (a/c <= 1)."""
+    return 1 + 1.464 * a_c ** 1.65
+
+
+def boundary_correction(a, c, t, b, phi):
+    """F(phi) of tension: K = S sqrt(pi a / Q) F (a/c <= 1)."""
+    a_c, a_t = a / c, a / t
+    m1 = 1.13 - 0.09 * a_c
+    m2 = -0.54 + 0.89 / (0.2 + a_c)
+    m3 = 0.5 - 1 / (0.65 + a_c) + 14 * (1 - a_c) ** 24
+    g = 1 + (0.1 + 0.35 * a_t ** 2) * (1 - math.sin(phi)) ** 2
+    f_phi = (a_c ** 2 * math.cos(phi) ** 2 + math.sin(phi) ** 2) ** 0.25
+    f_w = (1 / math.cos(math.pi * c / (2 * b) * math.sqrt(a_t))) ** 0.5
+    return (m1 + m2 * a_t ** 2 + m3 * a_t ** 4) * g * f_phi * f_w
+
+
+def bending_correction(a, c, t, phi):
+    """H(phi): K under an outer-fibre bending stress S_b is
+    S_b sqrt(pi a / Q) H F (a/c <= 1)."""
+    a_c, a_t = a / c, a / t
+    p = 0.2 + a_c + 0.6 * a_t
+    h1 = 1 - 0.34 * a_t - 0.11 * a_c * a_t
+    g1 = -1.22 - 0.12 * a_c
+    g2 = 0.55 - 1.05 * a_c ** 0.75 + 0.47 * a_c ** 1.5
+    h2 = 1 + g1 * a_t + g2 * a_t ** 2
+    return h1 + (h2 - h1) * math.sin(phi) ** p
+
+
+def k_tension(a, c, t, b, phi, stress=1.0):
+    return (stress * math.sqrt(math.pi * a / shape_factor(a / c)) *
+            boundary_correction(a, c, t, b, phi))
+
+
+def k_bending(a, c, t, b, phi, stress=1.0):
+    return (stress * math.sqrt(math.pi * a / shape_factor(a / c)) *
+            bending_correction(a, c, t, phi) *
+            boundary_correction(a, c, t, b, phi))
+
+
+def expression(a, c, t, b, tension=1.0, bending=0.0):
+    """K_I at the front point (x, y) as a muparser expression (phi from
+    the point's position on the ellipse), for 'Reference K'."""
+    a_c, a_t = a / c, a / t
+    m = ((1.13 - 0.09 * a_c) + (-0.54 + 0.89 / (0.2 + a_c)) * a_t ** 2 +
+         (0.5 - 1 / (0.65 + a_c) + 14 * (1 - a_c) ** 24) * a_t ** 4)
+    f_w = (1 / math.cos(math.pi * c / (2 * b) * math.sqrt(a_t))) ** 0.5
+    scale = math.sqrt(math.pi * a / shape_factor(a_c)) * m * f_w
+    gc = 0.1 + 0.35 * a_t ** 2
+    s = f"sin(atan2(abs(y) / {a!r}, abs(x) / {c!r}))"
+    factor = f"(1 + {gc!r} * (1 - {s})^2) * ({a_c ** 2!r} * (1 - {s}^2) + {s}^2)^0.25"
+    load = f"{tension!r}"
+    if bending:
+        p = 0.2 + a_c + 0.6 * a_t
+        h1 = 1 - 0.34 * a_t - 0.11 * a_c * a_t
+        h2 = (1 + (-1.22 - 0.12 * a_c) * a_t +
+              (0.55 - 1.05 * a_c ** 0.75 + 0.47 * a_c ** 1.5) * a_t ** 2)
+        load = (f"({tension!r} + {bending!r} * ({h1!r} + {h2 - h1!r} * "
+                f"{s}^{p!r}))")
+    return f"{scale!r} * {load} * {factor}; 0; 0"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--a", type=float, required=True, help="depth")
+    parser.add_argument("--c", type=float, required=True,
+                        help="half-length on the face")
+    parser.add_argument("--t", type=float, required=True, help="thickness")
+    parser.add_argument("--b", type=float, required=True,
+                        help="half-width of the plate")
+    parser.add_argument("--tension", type=float, default=1.0)
+    parser.add_argument("--bending", type=float, default=0.0,
+                        help="outer-fibre bending stress")
+    parser.add_argument("--expression", action="store_true",
+                        help="print the Reference K expression")
+    args = parser.parse_args()
+    if args.expression:
+        print(expression(args.a, args.c, args.t, args.b, args.tension,
+                         args.bending))
+        return
+    print("phi_deg  K_tension  K_bending  K")
+    for deg in (0, 10, 22.5, 30, 45, 60, 67.5, 80, 90):
+        phi = math.radians(deg)
+        kt = k_tension(args.a, args.c, args.t, args.b, phi)
+        kb = k_bending(args.a, args.c, args.t, args.b, phi)
+        print(f"{deg:7.1f}  {kt:9.5f}  {kb:9.5f}  "
+              f"{args.tension * kt + args.bending * kb:9.5f}")
+
+
+if __name__ == "__main__":
+    main()
