@@ -481,13 +481,15 @@ namespace xcrack
      * problem the mesh resolves), the estimate of its error
      * (KErrorEstimator, a dual solve per K mode and test function of the
      * front; along a 3D front the wide crown's K on the reported nodes),
-     * and the difference of the two K's.
+     * and the difference of the two K's. The wide crown crosses the body's
+     * faces as the reported K's does (@p faces, boundary_face_of()).
      */
     void
     estimate_k_errors(
-      const std::vector<std::vector<FrontPoint<dim>>>     &fronts,
-      const typename InteractionIntegral<dim>::FEValuesOf &fe_values_of,
-      const typename InteractionIntegral<dim>::LipsOf     &lips_of);
+      const std::vector<std::vector<FrontPoint<dim>>>         &fronts,
+      const typename InteractionIntegral<dim>::FEValuesOf     &fe_values_of,
+      const typename InteractionIntegral<dim>::LipsOf         &lips_of,
+      const typename InteractionIntegral<dim>::BoundaryFaceOf &faces);
 
     /// front_<key>.csv: K, G and, in a growth run, the moves (fracture.cc).
     void

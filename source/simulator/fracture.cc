@@ -84,7 +84,7 @@ namespace xcrack
       return;
     const bool estimate = fracture_parameters.error_estimate;
     if (estimate)
-      estimate_k_errors(fronts, fe_values_of, lips_of);
+      estimate_k_errors(fronts, fe_values_of, lips_of, faces);
 
     // The cross-check by the displacement jumps over the crown.
     const MappingQ1<dim>        mapping;
@@ -556,9 +556,10 @@ namespace xcrack
   template <int dim>
   void
   Simulator<dim>::estimate_k_errors(
-    const std::vector<std::vector<FrontPoint<dim>>>     &fronts,
-    const typename InteractionIntegral<dim>::FEValuesOf &fe_values_of,
-    const typename InteractionIntegral<dim>::LipsOf     &lips_of)
+    const std::vector<std::vector<FrontPoint<dim>>>         &fronts,
+    const typename InteractionIntegral<dim>::FEValuesOf     &fe_values_of,
+    const typename InteractionIntegral<dim>::LipsOf         &lips_of,
+    const typename InteractionIntegral<dim>::BoundaryFaceOf &faces)
   {
     FractureParameters wide                      = fracture_parameters;
     wide.crown_in_cells                          = false;
@@ -622,7 +623,9 @@ namespace xcrack
                  boundary_conditions.lip_pressure.get(),
                  lips_of,
                  boundary_conditions.body_force.get(),
-                 &derivatives);
+                 &derivatives,
+                 typename InteractionIntegral<dim>::LipTraction(),
+                 faces);
 
     // The dual solutions, one per test function and mode (their
     // combinations give the K nodes'), with the factorization of the solve;
