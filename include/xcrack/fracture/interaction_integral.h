@@ -106,9 +106,11 @@ namespace xcrack
     /// filled by the Simulator with Error estimate = true).
     std::array<double, 3> k_error = {{0, 0, 0}};
     /**
-     * Whether the crown stays clear of the body's boundary and of the other
-     * tips: the domain form assumes q = 0 on the boundary and a single
-     * singularity inside; if not, K is unreliable.
+     * Whether the crown stays clear of the other tips and of the boundary
+     * it cannot integrate over (2D: all of it; 3D: faces with Dirichlet
+     * data, whose reaction is unknown; free and loaded faces add their
+     * term): the domain form assumes a single singularity inside and no
+     * unknown traction on its boundary; if not, K is unreliable.
      */
     bool crown_clear = true;
     /**
