@@ -11,6 +11,24 @@ namespace xcrack
 {
   namespace
   {
+    /// The distance of @p x from the polyline @p curve through @p front
+    /// (from its point, a 2D tip).
+    template <int dim>
+    double
+    distance_to_front(const FrontCurve<dim>              &curve,
+                      const std::vector<FrontPoint<dim>> &front,
+                      const Point<dim>                   &x)
+    {
+      if (front.size() == 1)
+        return x.distance(front[0].position);
+      double d = std::numeric_limits<double>::max();
+      for (unsigned int i = 0; i + 1 < front.size(); ++i)
+        d = std::min(d, curve.segment_distance(i, x));
+      return d;
+    }
+
+
+
     /// The crown's unit: the size of the smallest cell the front crosses
     /// (Crown unit = cells), or 1.
     template <int dim>
@@ -21,21 +39,13 @@ namespace xcrack
     {
       if (!parameters.crown_in_cells)
         return 1.;
-      const unsigned int    n_segments = front.size() - 1;
       const FrontCurve<dim> polyline(front, 0);
-      const auto            distance = [&](const Point<dim> &x) {
-        double d = std::numeric_limits<double>::max();
-        if (n_segments == 0)
-          return x.distance(front[0].position);
-        for (unsigned int i = 0; i < n_segments; ++i)
-          d = std::min(d, polyline.segment_distance(i, x));
-        return d;
-      };
-      double h = std::numeric_limits<double>::max();
+      double                h = std::numeric_limits<double>::max();
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned() &&
             (dim == 2 ? cell->point_inside(front[0].position) :
-                        distance(cell->center()) < 0.5 * cell->diameter()))
+                        distance_to_front(polyline, front, cell->center()) <
+                          0.5 * cell->diameter()))
           h = std::min(h, cell->diameter() / std::sqrt(double(dim)));
       return Utilities::MPI::min(
         h, dof_handler.get_triangulation().get_communicator());
@@ -122,15 +132,8 @@ namespace xcrack
     for (unsigned int g = 0; g < fronts.size(); ++g)
       if (g != f)
         for (const auto &other : fronts[g])
-          {
-            double d = std::numeric_limits<double>::max();
-            if (n_segments == 0)
-              d = other.position.distance(fronts[f][0].position);
-            for (unsigned int i = 0; i < n_segments; ++i)
-              d = std::min(d, curve.segment_distance(i, other.position));
-            if (d < r_sup)
-              clear_of_other_fronts = false;
-          }
+          if (distance_to_front(curve, fronts[f], other.position) < r_sup)
+            clear_of_other_fronts = false;
 
     box_low  = fronts[f][0].position;
     box_high = box_low;
