@@ -25,6 +25,8 @@ namespace xcrack
                           fe_values.quadrature_point(q),
                           first,
                           last);
+        if (p.r < crown.core)
+          continue;
         p.du             = grad_u[q];
         const double JxW = fe_values.JxW(q);
         const auto   grad_N =
