@@ -25,6 +25,8 @@ namespace xcrack
                           fe_values.quadrature_point(q),
                           first,
                           last);
+        // Within Crown::core of the polyline the rule's weights do not
+        // match the auxiliary fields' singularity.
         if (p.r < crown.core)
           continue;
         p.du             = grad_u[q];
