@@ -124,7 +124,6 @@ namespace xcrack
     , unit(crown_scale(parameters, dof_handler, fronts[f]))
     , r_inf(parameters.crown_inner * unit)
     , r_sup(parameters.crown_outer * unit)
-    , core(dim == 3 ? 1e-3 * r_inf : 0.)
     , smooth(parameters.smooth_weight)
     , curve(fronts[f], 0.5 * r_sup)
     , basis(crown_basis(parameters, curve, r_sup, f))

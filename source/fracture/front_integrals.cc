@@ -27,7 +27,7 @@ namespace xcrack
                           last);
         // Within Crown::core of the polyline the rule's weights do not
         // match the auxiliary fields' singularity.
-        if (p.r < crown.core)
+        if (p.r < crown.core())
           continue;
         p.du             = grad_u[q];
         const double JxW = fe_values.JxW(q);

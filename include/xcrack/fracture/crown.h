@@ -57,18 +57,6 @@ namespace xcrack
     double
     dq_dr(const double r) const;
 
-    /// The segments of the front that can be nearest to a point of
-    /// @p cell, [first, last), or nothing if the crown cannot reach it.
-    std::optional<std::pair<unsigned int, unsigned int>>
-    segments_near(const CellIterator &cell) const;
-
-    /// Segments of the front (0 for a 2D tip).
-    unsigned int n_segments;
-    /// The radii's unit: the size of the smallest cell the front crosses
-    /// (Crown unit = cells), or 1.
-    double unit;
-    double r_inf;
-    double r_sup;
     /**
      * 3D: the radius of the tube about the front that the domain terms
      * leave out, 1e-3 r_inf. The auxiliary fields are singular on the
@@ -81,7 +69,24 @@ namespace xcrack
      * plane crack stays plane"). The tube's share of the integrals is of
      * order core / r_sup. Zero in 2D, where both fronts are one point.
      */
-    double core;
+    double
+    core() const
+    {
+      return dim == 3 ? 1e-3 * r_inf : 0.;
+    }
+
+    /// The segments of the front that can be nearest to a point of
+    /// @p cell, [first, last), or nothing if the crown cannot reach it.
+    std::optional<std::pair<unsigned int, unsigned int>>
+    segments_near(const CellIterator &cell) const;
+
+    /// Segments of the front (0 for a 2D tip).
+    unsigned int n_segments;
+    /// The radii's unit: the size of the smallest cell the front crosses
+    /// (Crown unit = cells), or 1.
+    double unit;
+    double r_inf;
+    double r_sup;
     /// Crown weight = smooth: q evaluated at every point.
     bool smooth;
     /// The front, with frames differenced over half of r_sup.
