@@ -2,8 +2,10 @@
 // InputError whose message names the culprit (entry, line, boundary id, file):
 // unknown entries, wrong types, out-of-range values, malformed or
 // inconsistent expressions, boundary ids absent from the mesh, impossible
-// combinations (an enrichment radius that does not fit the tip zone), a
-// missing mesh file, an unusable output directory. A valid input is accepted.
+// combinations (an enrichment radius that does not fit the tip zone, crowns
+// larger than the body), a missing mesh file, an unusable output directory.
+// A valid input is accepted, and so are crowns in cells that the refined
+// front cells can fit.
 
 #include <deal.II/base/mpi.h>
 
@@ -224,6 +226,21 @@ main(int argc, char **argv)
   check("crown radii in the wrong order",
         valid + "subsection Fracture parameters\n"
                 "  set Crown radii = 4, 2\nend\n");
+  check("crown larger than the body (radii as lengths)",
+        valid_3d + "subsection Fracture parameters\n"
+                   "  set Crown unit = absolute\n"
+                   "  set Crown radii = 1, 5\nend\n");
+  check("crown larger than the body even on the finest cells",
+        with_crack("set Start point = -1, 0.5\nset End point = 0.7, 0.5\n"
+                   "set Tips = end") +
+          "subsection Mesh refinement\n  set Maximum level = 3\nend\n"
+          "subsection Fracture parameters\n"
+          "  set Crown radii = 2, 100\nend\n");
+  check("crown as large as the body on the initial cells only",
+        with_crack("set Start point = -1, 0.5\nset End point = 0.7, 0.5\n"
+                   "set Tips = end") +
+          "subsection Fracture parameters\n"
+          "  set Crown radii = 2, 10\nend\n");
   check("crack mesh file that does not exist",
         with_crack("    set Shape = mesh\n    set File name = nowhere.msh"));
   check("output directory is a file",

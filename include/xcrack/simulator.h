@@ -1,6 +1,7 @@
 #ifndef xcrack_simulator_h
 #define xcrack_simulator_h
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
@@ -132,6 +133,13 @@ namespace xcrack
     /// Each crack must be one the mesh sees (a cell cut along it).
     void
     check_cracks_seen();
+    /// The crowns must be smaller than the body (Fracture parameters/Crown
+    /// radii).
+    void
+    check_crowns();
+    /// The bounding box of the body (collective).
+    BoundingBox<dim>
+    body_box() const;
     /// The output directory must be one the run can write into.
     void
     check_output_directory();

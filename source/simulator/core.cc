@@ -152,6 +152,7 @@ namespace xcrack
                   std::to_string(refinement_parameters.max_level) + ".");
     check_loads();
     check_cracks_seen();
+    check_crowns();
     create_finite_elements(prm);
     create_terms(prm);
     check_output_directory();

@@ -21,21 +21,10 @@ namespace xcrack
     // The data must be finite where it is used; how far it can move the
     // body tells a singular system by the size of its solution.
     {
-      double lower = std::numeric_limits<double>::max(), upper = -lower;
-      std::vector<double> low(dim, lower), high(dim, upper);
-      for (const auto &cell : triangulation.active_cell_iterators())
-        if (cell->is_locally_owned())
-          for (const unsigned int v : cell->vertex_indices())
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                low[d]  = std::min(low[d], cell->vertex(v)[d]);
-                high[d] = std::max(high[d], cell->vertex(v)[d]);
-              }
-      double size = 0;
+      const BoundingBox<dim> box  = body_box();
+      double                 size = 0;
       for (unsigned int d = 0; d < dim; ++d)
-        size = std::max(size,
-                        Utilities::MPI::max(high[d], mpi_communicator) -
-                          Utilities::MPI::min(low[d], mpi_communicator));
+        size = std::max(size, box.side_length(d));
       displacement_scale = boundary_conditions.check_finite(
         triangulation, degree, size, material.youngs_modulus);
       if (!load_cycle.proportional())
@@ -58,6 +47,86 @@ namespace xcrack
                   loads->section +
                     "/Lip pressure is set but there is no crack (Cracks/"
                     "Number of cracks = 0).");
+  }
+
+
+
+  template <int dim>
+  BoundingBox<dim>
+  Simulator<dim>::body_box() const
+  {
+    Point<dim> low, high;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        low[d]  = std::numeric_limits<double>::max();
+        high[d] = -low[d];
+      }
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              low[d]  = std::min(low[d], cell->vertex(v)[d]);
+              high[d] = std::max(high[d], cell->vertex(v)[d]);
+            }
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        low[d]  = Utilities::MPI::min(low[d], mpi_communicator);
+        high[d] = Utilities::MPI::max(high[d], mpi_communicator);
+      }
+    return BoundingBox<dim>(std::make_pair(low, high));
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_crowns()
+  {
+    // A crown larger than the body covers all of it, every load and
+    // support included: its K's are not those of the front. Radii given
+    // as lengths are checked as they are; radii in cells against the
+    // smallest cell the front can get (the finest cell of the initial
+    // mesh refined to Maximum level), so that only crowns that cannot
+    // fit are refused. Typically a unit slip (radii in mm in a body in m).
+    if (!fracture_parameters.compute || cracks.size() == 0)
+      return;
+    const BoundingBox<dim> box      = body_box();
+    const double           diagonal = box.get_boundary_points().first.distance(
+      box.get_boundary_points().second);
+    double smallest_unit = 1;
+    if (fracture_parameters.crown_in_cells)
+      {
+        double h = std::numeric_limits<double>::max();
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            h = std::min(
+              h,
+              cell->diameter() / std::sqrt(double(dim)) /
+                std::pow(2.,
+                         std::max(0,
+                                  int(refinement_parameters.max_level) -
+                                    cell->level())));
+        smallest_unit = Utilities::MPI::min(h, mpi_communicator);
+      }
+    const double r_sup = fracture_parameters.crown_outer * smallest_unit;
+    if (r_sup < diagonal)
+      return;
+    std::ostringstream message;
+    message << "Fracture parameters/Crown radii: r_sup = "
+            << fracture_parameters.crown_outer;
+    if (fracture_parameters.crown_in_cells)
+      message << " cells (at least " << r_sup
+              << " on the finest cells Maximum level allows)";
+    message << " is larger than the body, whose bounding box is " << diagonal
+            << " across: the crown would cover all of it, its loads and "
+               "supports included, and the K's would not be the front's. "
+               "Give radii of a few cells near the front"
+            << (fracture_parameters.crown_in_cells ?
+                  "." :
+                  " (Crown unit = absolute: they are lengths, in the "
+                  "mesh's unit).");
+    throw InputError(message.str());
   }
 
 
