@@ -2,7 +2,8 @@
 """K along semi-elliptical surface cracks against Newman and Raju's
 equations (issue 44, doc/verification/sif-3d.md "Where the front meets a
 free surface"): the series a/c x a/t x load at step 0, in a plate 8c wide
-and 8c long (c = 1), front cells about a/8 to a/13.
+and 8c long (c = 1; --half-width, --half-length change it), front cells
+about a/8 to a/13.
 
   /usr/bin/python3 contrib/study_surface_k.py --jobs 1
   /usr/bin/python3 contrib/study_surface_k.py --shapes 0.6 --depths 0.3 \\
@@ -29,16 +30,17 @@ import newman_raju  # noqa: E402
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def scene(a_c, a_t, load, refine):
-    """The prm text of one case and its geometry."""
+def scene(a_c, a_t, load, refine, b=4.0, length=4.0):
+    """The prm text of one case and its geometry: a plate 2 b wide and
+    2 length long."""
     c = 1.0
     a = a_c * c
     t = a / a_t
-    b = 4.0
     # Base cells about the thickness (at most 1), front cells a/8 or finer.
     ny = max(1, round(t))
     h0 = t / ny
     nx = round(2 * b / h0)
+    nz = round(2 * length / h0)
     level = math.ceil(math.log2(8 * h0 / a)) + refine
     h = h0 / 2 ** level
     expression = newman_raju.expression(
@@ -50,9 +52,9 @@ def scene(a_c, a_t, load, refine):
 set Output directory = output
 
 subsection Mesh
-  set Lower corner = {-b}, 0, {-b}
-  set Upper corner = {b}, {t!r}, {b}
-  set Subdivisions = {nx}, {ny}, {nx}
+  set Lower corner = {-b}, 0, {-length}
+  set Upper corner = {b}, {t!r}, {length}
+  set Subdivisions = {nx}, {ny}, {nz}
 end
 
 subsection Material
@@ -73,7 +75,7 @@ end
 
 subsection Boundary conditions
   set Neumann       = 4: 0; 0; -{stress} | 5: 0; 0; {stress}
-  set Pinned points = {-b}, {t!r}, {-b}: xyz | {b}, {t!r}, {-b}: yz | {-b}, {t!r}, {b}: y
+  set Pinned points = {-b}, {t!r}, {-length}: xyz | {b}, {t!r}, {-length}: yz | {-b}, {t!r}, {length}: y
 end
 
 subsection Enrichment
@@ -108,12 +110,12 @@ end
     return text, dict(a=a, c=c, t=t, b=b, h=h, centre=centre)
 
 
-def run(case, executable, work, refine):
+def run(case, executable, work, refine, b, length):
     a_c, a_t, load = case
-    name = f"ac{a_c}_at{a_t}_{load}"
+    name = f"ac{a_c}_at{a_t}_{load}_b{b}_l{length}_r{refine}"
     directory = os.path.join(work, name)
     os.makedirs(directory, exist_ok=True)
-    text, geometry = scene(a_c, a_t, load, refine)
+    text, geometry = scene(a_c, a_t, load, refine, b, length)
     with open(os.path.join(directory, "case.prm"), "w") as f:
         f.write(text)
     start = time.time()
@@ -158,6 +160,11 @@ def main():
     parser.add_argument("--loads", default="tension,bending")
     parser.add_argument("--refine", type=int, default=0,
                         help="levels beyond front cells of about a/8")
+    parser.add_argument("--half-width", type=float, default=4.0,
+                        help="b, the plate's half-width (c = 1)")
+    parser.add_argument("--half-length", type=float, default=4.0,
+                        help="the plate's half-length across the crack "
+                        "plane, where the load is applied")
     parser.add_argument("--jobs", type=int, default=1)
     args = parser.parse_args()
     cases = [(float(s), float(d), load)
@@ -168,7 +175,8 @@ def main():
     print("|---|---|---|---|---|---|---|---|---|")
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         for case, r, error in pool.map(
-                lambda c: run(c, args.executable, args.work, args.refine),
+                lambda c: run(c, args.executable, args.work, args.refine,
+                              args.half_width, args.half_length),
                 cases):
             a_c, a_t, load = case
             if error:
