@@ -13,6 +13,16 @@ phi; phi = 0 where the front meets the face, pi/2 at the deepest point).
   contrib/newman_raju.py --a 0.6 --c 1 --t 2 --b 4 --expression
       # 'Reference K' of a prm: K_I as an expression of the front point's
       # x (along the face) and y (depth), centre at the origin.
+  contrib/newman_raju.py --corner --a 0.6 --c 1 --t 2 --b 16 [--expression]
+
+A quarter-elliptical corner crack under tension (--corner; Newman and
+Raju 1986, "Stress-intensity factor equations for cracks in
+three-dimensional finite bodies subjected to tension and bending loads",
+in Atluri (ed.), Computational Methods in the Mechanics of Fracture,
+a/c <= 1): the crack at the edge where the face y = 0 meets the face
+x = 0, depth a along y into the thickness t, c along x on the face y = 0;
+b the plate's whole width from that edge. phi = 0 on the face y = 0,
+pi/2 on the face x = 0; both are free-surface points.
 """
 import argparse
 import math
@@ -46,6 +56,44 @@ def bending_correction(a, c, t, phi):
     g2 = 0.55 - 1.05 * a_c ** 0.75 + 0.47 * a_c ** 1.5
     h2 = 1 + g1 * a_t + g2 * a_t ** 2
     return h1 + (h2 - h1) * math.sin(phi) ** p
+
+
+def corner_correction(a, c, t, b, phi):
+    """F_c(phi) of a corner crack under tension: K = S sqrt(pi a / Q) F_c
+    (a/c <= 1; b the whole width). g1 raises K towards the face y = 0
+    (phi = 0), g2 towards the face x = 0 (phi = pi/2)."""
+    a_c, a_t = a / c, a / t
+    m1 = 1.08 - 0.03 * a_c
+    m2 = -0.44 + 1.06 / (0.3 + a_c)
+    m3 = -0.5 + 0.25 * a_c + 14.8 * (1 - a_c) ** 15
+    g1 = 1 + (0.08 + 0.4 * a_t ** 2) * (1 - math.sin(phi)) ** 3
+    g2 = 1 + (0.08 + 0.15 * a_t ** 2) * (1 - math.cos(phi)) ** 3
+    f_phi = (a_c ** 2 * math.cos(phi) ** 2 + math.sin(phi) ** 2) ** 0.25
+    lam = c / b * math.sqrt(a_t)
+    f_w = 1 - 0.2 * lam + 9.4 * lam ** 2 - 19.4 * lam ** 3 + 27.1 * lam ** 4
+    return (m1 + m2 * a_t ** 2 + m3 * a_t ** 4) * g1 * g2 * f_phi * f_w
+
+
+def k_corner(a, c, t, b, phi, stress=1.0):
+    return (stress * math.sqrt(math.pi * a / shape_factor(a / c)) *
+            corner_correction(a, c, t, b, phi))
+
+
+def corner_expression(a, c, t, b):
+    """K_I of a corner crack under a tension of 1 at the front point
+    (x, y), the corner at the origin, as a muparser expression."""
+    a_c, a_t = a / c, a / t
+    m = ((1.08 - 0.03 * a_c) + (-0.44 + 1.06 / (0.3 + a_c)) * a_t ** 2 +
+         (-0.5 + 0.25 * a_c + 14.8 * (1 - a_c) ** 15) * a_t ** 4)
+    lam = c / b * math.sqrt(a_t)
+    f_w = 1 - 0.2 * lam + 9.4 * lam ** 2 - 19.4 * lam ** 3 + 27.1 * lam ** 4
+    scale = math.sqrt(math.pi * a / shape_factor(a_c)) * m * f_w
+    s = f"sin(atan2(abs(y) / {a!r}, abs(x) / {c!r}))"
+    co = f"cos(atan2(abs(y) / {a!r}, abs(x) / {c!r}))"
+    factor = (f"(1 + {0.08 + 0.4 * a_t ** 2!r} * (1 - {s})^3) * "
+              f"(1 + {0.08 + 0.15 * a_t ** 2!r} * (1 - {co})^3) * "
+              f"({a_c ** 2!r} * {co}^2 + {s}^2)^0.25")
+    return f"{scale!r} * {factor}; 0; 0"
 
 
 def k_tension(a, c, t, b, phi, stress=1.0):
@@ -88,13 +136,25 @@ def main():
                         help="half-length on the face")
     parser.add_argument("--t", type=float, required=True, help="thickness")
     parser.add_argument("--b", type=float, required=True,
-                        help="half-width of the plate")
+                        help="half-width of the plate (--corner: the whole "
+                        "width from the cracked edge)")
+    parser.add_argument("--corner", action="store_true",
+                        help="a corner crack under tension")
     parser.add_argument("--tension", type=float, default=1.0)
     parser.add_argument("--bending", type=float, default=0.0,
                         help="outer-fibre bending stress")
     parser.add_argument("--expression", action="store_true",
                         help="print the Reference K expression")
     args = parser.parse_args()
+    if args.corner:
+        if args.expression:
+            print(corner_expression(args.a, args.c, args.t, args.b))
+            return
+        print("phi_deg  K_tension")
+        for deg in (0, 10, 22.5, 30, 45, 60, 67.5, 80, 90):
+            k = k_corner(args.a, args.c, args.t, args.b, math.radians(deg))
+            print(f"{deg:7.1f}  {args.tension * k:9.5f}")
+        return
     if args.expression:
         print(expression(args.a, args.c, args.t, args.b, args.tension,
                          args.bending))
