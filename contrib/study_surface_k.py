@@ -32,7 +32,7 @@ import newman_raju  # noqa: E402
 TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def scene(a_c, a_t, load, refine, b=4.0, length=4.0):
+def scene(a_c, a_t, load, refine, b=4.0, length=4.0, smoothing="legendre 3"):
     """The prm text of one case and its geometry: a plate 2 b wide and
     2 length long."""
     c = 1.0
@@ -87,7 +87,8 @@ end
 
 subsection Fracture parameters
   set Crown radii     = 2, 4
-  set Legendre degree = 3
+  set Smoothing       = {smoothing.split()[0]}
+  set Legendre degree = {smoothing.split()[1] if " " in smoothing else 3}
   set Reference K     = {expression}
 end
 
@@ -112,12 +113,13 @@ end
     return text, dict(a=a, c=c, t=t, b=b, h=h, centre=centre)
 
 
-def run(case, executable, work, refine, b, length):
+def run(case, executable, work, refine, b, length, smoothing):
     a_c, a_t, load = case
-    name = f"ac{a_c}_at{a_t}_{load}_b{b}_l{length}_r{refine}"
+    name = (f"ac{a_c}_at{a_t}_{load}_b{b}_l{length}_r{refine}_"
+            f"{smoothing.replace(' ', '')}")
     directory = os.path.join(work, name)
     os.makedirs(directory, exist_ok=True)
-    text, geometry = scene(a_c, a_t, load, refine, b, length)
+    text, geometry = scene(a_c, a_t, load, refine, b, length, smoothing)
     with open(os.path.join(directory, "case.prm"), "w") as f:
         f.write(text)
     start = time.time()
@@ -174,6 +176,8 @@ def main():
     parser.add_argument("--half-length", type=float, default=4.0,
                         help="the plate's half-length across the crack "
                         "plane, where the load is applied")
+    parser.add_argument("--smoothing", default="legendre 3",
+                        help="K along the front: 'legendre N' or 'lagrange'")
     parser.add_argument("--jobs", type=int, default=1)
     args = parser.parse_args()
     cases = [(float(s), float(d), load)
@@ -185,7 +189,8 @@ def main():
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         for case, r, error in pool.map(
                 lambda c: run(c, args.executable, args.work, args.refine,
-                              args.half_width, args.half_length),
+                              args.half_width, args.half_length,
+                              args.smoothing),
                 cases):
             a_c, a_t, load = case
             if error:
