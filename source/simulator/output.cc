@@ -60,6 +60,12 @@ namespace xcrack
                                  "lst" + suffix);
       }
     data_out.build_patches(degree);
+    // zlib's fastest level: deal.II's default (best compression) made the
+    // VTU files most of a 2D step (doc/performance.md, "The overhead of a
+    // 2D step"); the files grow by a few tens of percent.
+    DataOutBase::VtkFlags vtk_flags;
+    vtk_flags.compression_level = DataOutBase::VtkFlags::best_speed;
+    data_out.set_flags(vtk_flags);
     // crack-<key>.vtu for one crack, crack<i>-<key>.vtu for several, and
     // crack.pvd, the series of the first crack (ParaView shows it grow).
     const std::string dir = run_parameters.output_directory + "/";
