@@ -4,11 +4,16 @@
 freedom, the depth a and the half-length c, each grown by the Paris law
 with Newman and Raju's K at its point (da/dN = C dK(90 deg)^m, dc/dN =
 C dK(0)^m), integrated in N by classical Runge-Kutta. Compared with a
-surface-crack run of xcrack (free front shape): a(N) and c(N) side by side
-at the run's steps (issue 44 §2).
+surface-crack run of xcrack (free front shape) at the run's steps
+(issue 44 §2): a and c at equal N; c and N at equal depth; N at equal
+depth once more with the procedure's K's scaled by the run's own ratios to
+Newman and Raju (what then remains is not the level of K); how far the
+front departs from its ellipse and its K against Newman and Raju's. The
+figure draws a(N), c(N) and a/c against a/t.
 
   /usr/bin/python3 contrib/two_point_growth.py output/surface_crack_3d \\
-      --t 2 --b 4 --C 1e-3 --m 3 [--stress 1] [--figure a_c.png]
+      --t 2 --b 4 --C 1e-3 --m 3 [--stress 1] [--depth 1.6] \\
+      [--figure a_c.png]
 
 The run's depth is its front's y halfway between its ends (a quadratic
 through the three front points nearest); its half-length half the
@@ -155,8 +160,7 @@ def main():
     # Twice the run's cycles, so that the procedure reaches the run's
     # depths even where it grows more slowly.
     path = integrate(a0, c0, 2 * history[-1][0], args.t, args.b, args.C,
-                     args.m,
-                     args.stress)
+                     args.m, args.stress)
     # The procedure with Newman and Raju's K's scaled by the run's own
     # ratios to them (at its deepest point and face points, linear in a
     # between the run's steps): what is left between it and the run is
