@@ -555,7 +555,8 @@ namespace xcrack
 
     /// Execute the marked refinement and coarsening, capped at the levels
     /// of the parameters (and at @p level_cap), carrying the fields; false
-    /// if nothing was marked.
+    /// if nothing was marked, or if only coarsening was and the mesh kept
+    /// every cell (it did not change).
     bool
     execute_refinement(
       const unsigned int level_cap = numbers::invalid_unsigned_int);

@@ -37,12 +37,25 @@ namespace xcrack
     // The cracks' fields follow the mesh (before the cracks move, the next
     // set-up interpolates their shapes again).
     triangulation.prepare_coarsening_and_refinement();
+    // With no refinement left to do, the mesh can only lose cells; if it
+    // keeps them all, nothing changed (coarsen flags the 2:1 balance does
+    // not let through), and marking again would set the same flags: a pass
+    // that ends the loop of adapt_mesh_to_fronts() rather than repeating
+    // it up to Maximum level times (doc/performance.md, "The overhead of a
+    // 2D step").
+    bool refines = false;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->refine_flag_set())
+        refines = true;
+    refines = Utilities::MPI::logical_or(refines, mpi_communicator);
+    const types::global_cell_index n_cells =
+      triangulation.n_global_active_cells();
     if (enrichment)
       level_sets.prepare_for_coarsening_and_refinement();
     triangulation.execute_coarsening_and_refinement();
     if (enrichment)
       level_sets.interpolate();
-    return true;
+    return refines || triangulation.n_global_active_cells() != n_cells;
   }
 
 
