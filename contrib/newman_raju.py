@@ -69,6 +69,9 @@ def corner_correction(a, c, t, b, phi):
     g1 = 1 + (0.08 + 0.4 * a_t ** 2) * (1 - math.sin(phi)) ** 3
     g2 = 1 + (0.08 + 0.15 * a_t ** 2) * (1 - math.cos(phi)) ** 3
     f_phi = (a_c ** 2 * math.cos(phi) ** 2 + math.sin(phi) ** 2) ** 0.25
+    # The width correction of the corner crack has not been checked
+    # against a second source (the rest has); sif_corner_3d.prm keeps c/b
+    # at 1/16, where it is 1.003.
     lam = c / b * math.sqrt(a_t)
     f_w = 1 - 0.2 * lam + 9.4 * lam ** 2 - 19.4 * lam ** 3 + 27.1 * lam ** 4
     return (m1 + m2 * a_t ** 2 + m3 * a_t ** 4) * g1 * g2 * f_phi * f_w
