@@ -58,23 +58,30 @@ def bending_correction(a, c, t, phi):
     return h1 + (h2 - h1) * math.sin(phi) ** p
 
 
-def corner_correction(a, c, t, b, phi):
-    """F_c(phi) of a corner crack under tension: K = S sqrt(pi a / Q) F_c
-    (a/c <= 1; b the whole width). g1 raises K towards the face y = 0
-    (phi = 0), g2 towards the face x = 0 (phi = pi/2)."""
+def corner_terms(a, c, t, b):
+    """The parts of a corner crack's F_c that do not depend on phi: the
+    M polynomial times the width correction, and the coefficients of g1
+    and g2 (a/c <= 1; b the whole width)."""
     a_c, a_t = a / c, a / t
-    m1 = 1.08 - 0.03 * a_c
-    m2 = -0.44 + 1.06 / (0.3 + a_c)
-    m3 = -0.5 + 0.25 * a_c + 14.8 * (1 - a_c) ** 15
-    g1 = 1 + (0.08 + 0.4 * a_t ** 2) * (1 - math.sin(phi)) ** 3
-    g2 = 1 + (0.08 + 0.15 * a_t ** 2) * (1 - math.cos(phi)) ** 3
-    f_phi = (a_c ** 2 * math.cos(phi) ** 2 + math.sin(phi) ** 2) ** 0.25
-    # The width correction of the corner crack has not been checked
-    # against a second source (the rest has); sif_corner_3d.prm keeps c/b
-    # at 1/16, where it is 1.003.
+    m = ((1.08 - 0.03 * a_c) + (-0.44 + 1.06 / (0.3 + a_c)) * a_t ** 2 +
+         (-0.5 + 0.25 * a_c + 14.8 * (1 - a_c) ** 15) * a_t ** 4)
+    # The width correction has not been checked against a second source
+    # (the rest has); sif_corner_3d.prm keeps c/b at 1/16, where it is
+    # 1.003.
     lam = c / b * math.sqrt(a_t)
     f_w = 1 - 0.2 * lam + 9.4 * lam ** 2 - 19.4 * lam ** 3 + 27.1 * lam ** 4
-    return (m1 + m2 * a_t ** 2 + m3 * a_t ** 4) * g1 * g2 * f_phi * f_w
+    return m * f_w, 0.08 + 0.4 * a_t ** 2, 0.08 + 0.15 * a_t ** 2
+
+
+def corner_correction(a, c, t, b, phi):
+    """F_c(phi) of a corner crack under tension: K = S sqrt(pi a / Q) F_c.
+    g1 raises K towards the face y = 0 (phi = 0), g2 towards the face
+    x = 0 (phi = pi/2)."""
+    m_f_w, g1c, g2c = corner_terms(a, c, t, b)
+    g1 = 1 + g1c * (1 - math.sin(phi)) ** 3
+    g2 = 1 + g2c * (1 - math.cos(phi)) ** 3
+    f_phi = ((a / c) ** 2 * math.cos(phi) ** 2 + math.sin(phi) ** 2) ** 0.25
+    return m_f_w * g1 * g2 * f_phi
 
 
 def k_corner(a, c, t, b, phi, stress=1.0):
@@ -85,17 +92,13 @@ def k_corner(a, c, t, b, phi, stress=1.0):
 def corner_expression(a, c, t, b):
     """K_I of a corner crack under a tension of 1 at the front point
     (x, y), the corner at the origin, as a muparser expression."""
-    a_c, a_t = a / c, a / t
-    m = ((1.08 - 0.03 * a_c) + (-0.44 + 1.06 / (0.3 + a_c)) * a_t ** 2 +
-         (-0.5 + 0.25 * a_c + 14.8 * (1 - a_c) ** 15) * a_t ** 4)
-    lam = c / b * math.sqrt(a_t)
-    f_w = 1 - 0.2 * lam + 9.4 * lam ** 2 - 19.4 * lam ** 3 + 27.1 * lam ** 4
-    scale = math.sqrt(math.pi * a / shape_factor(a_c)) * m * f_w
+    m_f_w, g1c, g2c = corner_terms(a, c, t, b)
+    scale = math.sqrt(math.pi * a / shape_factor(a / c)) * m_f_w
     s = f"sin(atan2(abs(y) / {a!r}, abs(x) / {c!r}))"
     co = f"cos(atan2(abs(y) / {a!r}, abs(x) / {c!r}))"
-    factor = (f"(1 + {0.08 + 0.4 * a_t ** 2!r} * (1 - {s})^3) * "
-              f"(1 + {0.08 + 0.15 * a_t ** 2!r} * (1 - {co})^3) * "
-              f"({a_c ** 2!r} * {co}^2 + {s}^2)^0.25")
+    factor = (f"(1 + {g1c!r} * (1 - {s})^3) * "
+              f"(1 + {g2c!r} * (1 - {co})^3) * "
+              f"({(a / c) ** 2!r} * {co}^2 + {s}^2)^0.25")
     return f"{scale!r} * {factor}; 0; 0"
 
 

@@ -165,10 +165,10 @@ def main():
     # ratios to them (at its deepest point and face points, linear in a
     # between the run's steps): what is left between it and the run is
     # not the level of K but the front's shape and the integration.
-    ratios = []
-    for n, a, c, rows in history:
-        _, k_deep, k_face = front_against_ellipse(rows, a, c, args.t, args.b)
-        ratios.append((a, 1 + k_deep, 1 + sum(k_face) / len(k_face)))
+    checks = [front_against_ellipse(rows, a, c, args.t, args.b)
+              for n, a, c, rows in history]
+    ratios = [(a, 1 + k_deep, 1 + sum(k_face) / len(k_face))
+              for (n, a, c, rows), (_, k_deep, k_face) in zip(history, checks)]
 
     def scale(a):
         if a <= ratios[0][0]:
@@ -192,11 +192,10 @@ def main():
           "equal a | off the ellipse | K_I deepest vs N-R | "
           "K_I face vs N-R |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|")
-    for step, (n, a, c, rows) in enumerate(history):
+    for step, ((n, a, c, rows), (shape, k_deep, k_face)) in enumerate(
+            zip(history, checks)):
         procedure = at(path, n)
         n_a, c_a = at_depth(path, a)
-        shape, k_deep, k_face = front_against_ellipse(rows, a, c, args.t,
-                                                      args.b)
         faces = ", ".join(f"{100 * k:+.1f} %" for k in k_face)
         n_diff = f"{100 * (n / n_a - 1):+.1f} %" if n_a > 0 else ""
         n_s, _ = at_depth(scaled, a)
